@@ -1,0 +1,55 @@
+"""Hydrodynamic database I/O timings: each reader on the public reference data, and BEMIO write/read.
+
+Run: ``python bench/bench_hydro.py`` (from the repo root, with ../shared/refdata present).
+Figures go to bench/README.md by hand, with the machine and date.
+"""
+
+from __future__ import annotations
+
+import platform
+import tempfile
+import time
+from pathlib import Path
+
+from boatland.hydro import read_hydro, write_bemio
+
+REF = Path(__file__).resolve().parents[2] / "shared" / "refdata"
+CASES = {
+    "wamit sphere (420 ω)": REF / "wamit_sphere" / "sphere.1",
+    "nemoh sphere (420 ω)": REF / "nemoh_sphere",
+    "capytaine sphere (420 ω)": REF / "capytaine_sphere" / "sphere_hydrodynamics.nc",
+    "aqwa cylinder (50 ω, 3 β)": REF / "aqwa_cylinder" / "cylinder.AH1",
+    "bemio sphere (240 ω)": REF / "bemio_sphere" / "sphere.h5",
+}
+
+
+def best_of(fn, n=5):
+    times = []
+    for _ in range(n):
+        t0 = time.perf_counter()
+        fn()
+        times.append(time.perf_counter() - t0)
+    return min(times)
+
+
+def main():
+    print(f"# {platform.processor() or platform.machine()}, Python {platform.python_version()}")
+    print("| case | read [ms] |")
+    print("|---|---|")
+    for name, path in CASES.items():
+        print(f"| {name} | {1e3 * best_of(lambda: read_hydro(path)):.1f} |")
+    try:
+        from boatland.hydro.builtin import load_builtin
+    except ImportError:
+        return
+    for name in ("ctv24", "model2"):
+        db = load_builtin(name)
+        with tempfile.TemporaryDirectory() as tmp:
+            p = Path(tmp) / "db.h5"
+            tw = best_of(lambda: write_bemio(db, p))
+            tr = best_of(lambda: read_hydro(p))
+        print(f"| {name} write / read ({db.n_freq} ω, {db.n_dir} β) | {1e3 * tw:.1f} / {1e3 * tr:.1f} |")
+
+
+if __name__ == "__main__":
+    main()

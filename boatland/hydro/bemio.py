@@ -1,0 +1,250 @@
+"""BEMIO HDF5: the interchange format of WEC-Sim, HydroChrono and BEMRosetta — boatland's database file.
+
+Layout (notes/hydro-formats.md). Hydrodynamic arrays are stored normalised as BEMIO expects:
+A/ρ, B/(ρω), C/(ρg), X/(ρg), with the WAMIT phase convention exp(+iωt) (the same as boatland's).
+Scalars are stored with shape (1, 1) and vectors as columns, as the files MATLAB's BEMIO writes.
+
+boatland's extras live under ``/body1/boatland/`` where other readers ignore them:
+
+- ``mass_matrix`` (6, 6): rigid-body mass matrix about the reference point;
+- ``ref_point`` (3,);
+- ``A0`` (6, 6): zero-frequency added mass, when known;
+- ``exact/{A, B, C, X_re, X_im, A_inf}``: the dimensional arrays bit for bit (normalising and
+  un-normalising is not exact in floating point); used only while they agree with the BEMIO arrays,
+  so a file edited by another tool is read from its BEMIO arrays;
+- ``mesh/{vertices, faces}``: wetted hull panels;
+- attributes ``name``, ``provenance_*``.
+
+Other groups present in a file (IRFs, state-space fits) are left for :mod:`boatland.irf` to read and
+write; rewriting a database with :func:`write_bemio` keeps nothing else.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+
+from boatland import __version__
+from boatland.atomic import atomic_path
+from boatland.errors import HydroDataError
+from boatland.model.hydrodb import HullMesh, HydroDB, Provenance
+
+__all__ = ["read_bemio", "write_bemio", "is_bemio"]
+
+_HC = "body1/hydro_coeffs"
+_EXTRA = "body1/boatland"
+
+
+def is_bemio(path: Path) -> bool:
+    """True when ``path`` is an HDF5 file with the BEMIO ``/body1/hydro_coeffs`` group."""
+    import h5py
+
+    try:
+        with h5py.File(path, "r") as f:
+            return _HC in f
+    except OSError:
+        return False
+
+
+def write_bemio(db: HydroDB, path: str | Path) -> Path:
+    """Write ``db`` to ``path`` (BEMIO HDF5 plus boatland extras), atomically.
+
+    Parameters
+    ----------
+    db : HydroDB
+        The database.
+    path : str or Path
+        Target file; replaced only when the whole file has been written.
+    """
+    import h5py
+
+    path = Path(path)
+    rho, g, w = db.rho, db.g, db.omega
+    col = lambda a: np.asarray(a, dtype=float).reshape(-1, 1)  # noqa: E731
+    scalar = lambda v: np.array([[float(v)]])  # noqa: E731
+    with atomic_path(path) as tmp:
+        with h5py.File(tmp, "w") as f:
+            f["bem_data/code"] = np.bytes_(db.provenance.solver or "unknown")
+            sp = f.create_group("simulation_parameters")
+            sp["g"] = scalar(g)
+            sp["rho"] = scalar(rho)
+            sp["w"] = col(w)
+            sp["T"] = col(2 * np.pi / w)
+            sp["water_depth"] = np.bytes_("infinite") if np.isinf(db.water_depth) else scalar(db.water_depth)
+            sp["wave_dir"] = col(db.wave_dir_deg)
+            sp["scaled"] = scalar(0)
+            pr = f.create_group("body1/properties")
+            pr["name"] = np.bytes_(db.name)
+            pr["cg"] = col(db.cog)
+            pr["cb"] = col(db.cob)
+            pr["disp_vol"] = scalar(db.disp_vol)
+            pr["body_number"] = scalar(1)
+            pr["dof"] = scalar(6)
+            pr["dof_start"] = scalar(1)
+            pr["dof_end"] = scalar(6)
+            hc = f.create_group(_HC)
+            hc["linear_restoring_stiffness"] = db.C / (rho * g)
+            hc["added_mass/all"] = db.A / rho
+            if db.A_inf is not None:
+                hc["added_mass/inf_freq"] = db.A_inf / rho
+            hc["radiation_damping/all"] = db.B / (rho * w)
+            Xn = db.X / (rho * g)
+            for key, val in (("re", Xn.real), ("im", Xn.imag), ("mag", np.abs(Xn)), ("phase", np.angle(Xn))):
+                hc[f"excitation/{key}"] = val
+            ex = f.create_group(_EXTRA)
+            ex.attrs["name"] = db.name
+            ex.attrs["boatland_version"] = __version__
+            for key in ("source", "solver", "created", "reader"):
+                ex.attrs[f"provenance_{key}"] = getattr(db.provenance, key)
+            ex.attrs["provenance_notes"] = json.dumps(list(db.provenance.notes))
+            ex["ref_point"] = db.ref_point
+            ex["water_depth"] = db.water_depth
+            if db.M is not None:
+                ex["mass_matrix"] = db.M
+            if db.A_0 is not None:
+                ex["A0"] = db.A_0
+            exact = ex.create_group("exact")
+            exact["A"], exact["B"], exact["C"] = db.A, db.B, db.C
+            exact["X_re"], exact["X_im"] = db.X.real, db.X.imag
+            if db.A_inf is not None:
+                exact["A_inf"] = db.A_inf
+            if db.mesh is not None:
+                ex["mesh/vertices"] = db.mesh.vertices
+                ex["mesh/faces"] = db.mesh.faces
+    return path
+
+
+def read_bemio(path: str | Path) -> HydroDB:
+    """Read a BEMIO HDF5 file (boatland's own, WEC-Sim's or HydroChrono's) into a :class:`HydroDB`.
+
+    Raises
+    ------
+    HydroDataError
+        The file is missing, not HDF5, lacks a required dataset, or holds arrays of the wrong shape
+        or with NaN — the message names the file and the dataset.
+    """
+    import h5py
+
+    path = Path(path)
+    if not path.exists():
+        raise HydroDataError(path, None, "file not found")
+    try:
+        f = h5py.File(path, "r")
+    except OSError as exc:
+        raise HydroDataError(path, None, f"not a readable HDF5 file ({exc.__class__.__name__}: "
+                                         f"{str(exc).split('(')[0].strip()}); expected a BEMIO database") from None
+    with f:
+        def get(name, required=True):
+            if name not in f:
+                if required:
+                    raise HydroDataError(path, f"/{name}", "dataset missing; expected a BEMIO HDF5 database "
+                                                            "(WEC-Sim/BEMIO layout)")
+                return None
+            try:
+                return f[name][()]
+            except Exception as exc:  # corrupted chunk, truncated file
+                raise HydroDataError(path, f"/{name}", f"cannot be read ({exc}); the file is damaged") from None
+
+        def num(name, required=True):
+            v = get(name, required)
+            if v is None:
+                return None
+            try:
+                return np.asarray(v, dtype=float)
+            except (TypeError, ValueError):
+                raise HydroDataError(path, f"/{name}", f"expected numbers, got {v!r:.60}") from None
+
+        rho = float(num("simulation_parameters/rho").reshape(-1)[0])
+        g = float(num("simulation_parameters/g").reshape(-1)[0])
+        w = num("simulation_parameters/w").reshape(-1)
+        beta = num("simulation_parameters/wave_dir").reshape(-1)
+        depth_raw = get("simulation_parameters/water_depth", required=False)
+        water_depth = _depth(depth_raw, path)
+
+        has_exact = f"{_EXTRA}/exact/A" in f
+        A = num(f"{_HC}/added_mass/all")
+        Bn = num(f"{_HC}/radiation_damping/all")
+        C = num(f"{_HC}/linear_restoring_stiffness")
+        re, im = num(f"{_HC}/excitation/re"), num(f"{_HC}/excitation/im")
+        A_inf = num(f"{_HC}/added_mass/inf_freq", required=False)
+        nf, nb = w.size, beta.size
+        for name, arr, shape in (("added_mass/all", A, (6, 6, nf)), ("radiation_damping/all", Bn, (6, 6, nf)),
+                                 ("linear_restoring_stiffness", C, (6, 6)), ("excitation/re", re, (6, nb, nf)),
+                                 ("excitation/im", im, (6, nb, nf))):
+            if arr.shape != shape:
+                raise HydroDataError(path, f"/{_HC}/{name}", f"expected shape {shape} "
+                                     f"(from {nf} frequencies and {nb} directions), got {arr.shape}")
+        A, B, C, X = A * rho, Bn * rho * w, C * rho * g, (re + 1j * im) * rho * g
+        A_inf = None if A_inf is None else A_inf * rho
+        notes: list[str] = []
+        if has_exact:
+            eA, eB, eC = num(f"{_EXTRA}/exact/A"), num(f"{_EXTRA}/exact/B"), num(f"{_EXTRA}/exact/C")
+            eX = num(f"{_EXTRA}/exact/X_re") + 1j * num(f"{_EXTRA}/exact/X_im")
+            eAi = num(f"{_EXTRA}/exact/A_inf", required=False)
+            pairs = [(eA, A), (eB, B), (eC, C), (eX, X)] + ([(eAi, A_inf)] if A_inf is not None else [])
+            if all(e.shape == a.shape and np.allclose(e, a, rtol=1e-10, atol=1e-12 * max(np.max(np.abs(a)), 1.0))
+                   for e, a in pairs) and (eAi is None) == (A_inf is None):
+                A, B, C, X, A_inf = eA, eB, eC, eX, eAi
+            else:
+                notes.append("boatland's exact copy disagrees with the BEMIO arrays (edited by another tool?): "
+                             "used the BEMIO arrays")
+
+        M = num(f"{_EXTRA}/mass_matrix", required=False)
+        A0 = num(f"{_EXTRA}/A0", required=False)
+        ref = num(f"{_EXTRA}/ref_point", required=False)
+        cg = num("body1/properties/cg", required=False)
+        cb = num("body1/properties/cb", required=False)
+        vol = num("body1/properties/disp_vol", required=False)
+        if f"{_EXTRA}/water_depth" in f:
+            water_depth = float(num(f"{_EXTRA}/water_depth"))
+        ex = f[_EXTRA].attrs if _EXTRA in f else {}
+        code = get("bem_data/code", required=False)
+        solver = _text(code) if code is not None else ""
+        name = ex.get("name", None) or _text(get("body1/properties/name", required=False) or b"body1")
+        prov = Provenance(
+            source=str(ex.get("provenance_source", path)),
+            solver=str(ex.get("provenance_solver", solver)),
+            created=str(ex.get("provenance_created", "")),
+            reader=str(ex.get("provenance_reader", "bemio")),
+            notes=tuple(json.loads(ex.get("provenance_notes", "[]"))) + tuple(notes),
+        )
+        mesh = None
+        if f"{_EXTRA}/mesh/vertices" in f:
+            mesh = HullMesh(num(f"{_EXTRA}/mesh/vertices"), get(f"{_EXTRA}/mesh/faces"))
+    try:
+        return HydroDB(
+            omega=w, A=A, B=B, X=X, wave_dir_deg=beta, C=C, A_inf=A_inf, A_0=A0, M=M,
+            ref_point=np.zeros(3) if ref is None else ref,
+            cog=np.zeros(3) if cg is None else cg.reshape(-1),
+            cob=np.zeros(3) if cb is None else cb.reshape(-1),
+            disp_vol=0.0 if vol is None else float(vol.reshape(-1)[0]),
+            water_depth=water_depth, rho=rho, g=g, name=str(name), provenance=prov, mesh=mesh,
+        )
+    except HydroDataError as exc:
+        raise HydroDataError(path, exc.where, exc.message) from None
+
+
+def _text(v) -> str:
+    if isinstance(v, bytes):
+        return v.decode(errors="replace")
+    if isinstance(v, np.ndarray):
+        return _text(v.reshape(-1)[0]) if v.size else ""
+    return str(v)
+
+
+def _depth(raw, path) -> float:
+    if raw is None:
+        return np.inf
+    if isinstance(raw, (bytes, str)) or (isinstance(raw, np.ndarray) and raw.dtype.kind in "SUO"):
+        text = _text(raw).strip().lower()
+        if text in ("infinite", "inf"):
+            return np.inf
+        try:
+            return float(text)
+        except ValueError:
+            raise HydroDataError(path, "/simulation_parameters/water_depth",
+                                 f"expected a depth in m or 'infinite', got {text!r}") from None
+    d = float(np.asarray(raw, dtype=float).reshape(-1)[0])
+    return np.inf if d <= 0 else d

@@ -1,0 +1,1 @@
+"""Radiation memory kernels: impulse-response functions, A∞ (Ogilvie), state-space fits (issue 3)."""

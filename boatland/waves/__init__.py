@@ -1,0 +1,1 @@
+"""Wave kernels: spectra, seeded realisations, excitation series, diffraction (issues 4 and 9)."""

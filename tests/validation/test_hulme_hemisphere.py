@@ -1,0 +1,69 @@
+"""Floating hemisphere in heave against Hulme's analytic coefficients.
+
+Reference: A. Hulme (1982), "The wave forces acting on a floating hemisphere undergoing forced
+periodic oscillations", J. Fluid Mech. 121, 443–463 — table transcribed in
+shared/refdata/hulme (from LHEEA/Hulme_Heaving_Sphere). BEM data: HydroChrono's
+demos/sphere/hydroData/sphere.h5 (WAMIT, radius 5 m, 200 m depth ≈ deep for these kA).
+"""
+
+import numpy as np
+import pytest
+
+from boatland.hydro.bemio import read_bemio
+
+
+@pytest.fixture(scope="module")
+def hulme(refdata):
+    return np.loadtxt(refdata / "hulme" / "hulme1982_hemisphere_heave.dat", comments="#")
+
+
+@pytest.fixture(scope="module")
+def sphere(refdata):
+    return read_bemio(refdata / "bemio_sphere" / "sphere.h5")
+
+
+RADIUS = 5.0
+#: Hulme's table is printed to 4 decimals: each entry stands for a value within ±5e-5 of it. For small
+#: entries (λ = 0.0219 at kA = 4) that rounding alone is ±0.23 %, so a relative check must measure the
+#: distance to the interval the printed value stands for, not to the printed digits.
+HALF_UNIT = 5e-5
+
+
+def rel_error(bem, table):
+    """Distance of ``bem`` to Hulme's rounding interval, relative to the table value."""
+    return np.maximum(np.abs(bem - table) - HALF_UNIT, 0.0) / np.abs(table)
+
+
+def nondim(db):
+    V = 2 / 3 * np.pi * RADIUS ** 3
+    kA = db.omega ** 2 * RADIUS / db.g
+    mu = db.A[2, 2] / (db.rho * V)
+    lam = db.B[2, 2] / (db.rho * db.omega * V)
+    return kA, mu, lam
+
+
+def test_added_mass_within_half_percent_of_hulme(sphere, hulme):
+    kA, mu, _ = nondim(sphere)
+    rows = hulme[hulme[:, 0] >= kA[0]]  # kA = 0 is ω = 0 (not in the band); 0.05 is at ω = 0.31
+    assert rows.shape[0] >= 24
+    mu_bem = np.interp(rows[:, 0], kA, mu)
+    rel = rel_error(mu_bem, rows[:, 1])
+    assert rel.max() < 0.005, dict(zip(rows[:, 0], rel.round(4)))
+
+
+def test_damping_within_half_percent_of_hulme_up_to_ka_4(sphere, hulme):
+    kA, _, lam = nondim(sphere)
+    rows = hulme[(hulme[:, 0] > 0) & (hulme[:, 0] <= 4.0)]
+    lam_bem = np.interp(rows[:, 0], kA, lam)
+    rel = rel_error(lam_bem, rows[:, 2])
+    # measured: worst at kA = 4, λ_BEM = 0.02201 vs 0.0219 printed (0.53 % from the digits, 0.28 %
+    # from the rounding interval); everywhere else < 0.3 % from the printed digits
+    assert rel.max() < 0.005, dict(zip(rows[:, 0], rel.round(4)))
+    # Not checked: beyond kA = 4 this file's damping exceeds Hulme's table by 0.4–1.4e-4 absolute
+    # (1.2 % at kA = 5, 2.1 % at kA = 6): short waves (λ/a ≈ 1.3) on a 5 m sphere test the BEM mesh,
+    # not the readers. See tests/validation/test_hemisphere_codes.py for the cross-code comparison.
+
+
+def test_a_inf_tends_to_half(sphere):
+    V = 2 / 3 * np.pi * RADIUS ** 3
+    assert abs(sphere.A_inf[2, 2] / (sphere.rho * V) - 0.5) < 0.005
