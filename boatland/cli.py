@@ -12,6 +12,8 @@ import logging
 import sys
 from pathlib import Path
 
+import numpy as np
+
 from boatland import __version__
 from boatland.errors import BoatlandInputError
 
@@ -96,6 +98,35 @@ def _parser() -> argparse.ArgumentParser:
 
     lst = hsub.add_parser("list", help="list the built-in vessel databases")
     lst.set_defaults(func=_cmd_list)
+
+    irf = sub.add_parser(
+        "irf", help="radiation impulse-response functions and state-space fit of a database",
+        description="Compute the radiation IRFs K(t) = (2/π)∫B(ω)cos(ωt)dω of a database, check them "
+                    "(B and A reconstructed from K, truncation at T_K, Ogilvie's A∞), fit a stable "
+                    "state-space model per DOF pair, print the figures and store everything in the "
+                    "database file (BEMIO impulse_response_fun / state_space groups).")
+    irf.add_argument("database", nargs="?", default=DEFAULT_VESSEL,
+                     help=f"database file or built-in vessel name (default: {DEFAULT_VESSEL})")
+    irf.add_argument("--t-max", type=float, default=60.0, help="memory length T_K [s] (default 60)")
+    irf.add_argument("--dt", type=float, help="time step of K [s] (default min(0.05, π/(1.2 ω_max)))")
+    irf.add_argument("--tail", choices=("linear", "none", "asymptotic"), default="linear",
+                     help="B(ω) above the band: straight to zero over 20%% of ω_max (default), stop, or "
+                          "extrapolate ∝ ω^-n")
+    irf.add_argument("--taper", choices=("none", "cosine"), default="none", help="time window on K")
+    irf.add_argument("--clean", choices=("clip", "cut", "none"), default="clip",
+                     help="negative damping: clip to zero (default), cut the band, or keep")
+    irf.add_argument("--band", type=float, nargs=2, metavar=("LO", "HI"),
+                     help="frequency band [rad/s] of the round-trip check (default: the whole band)")
+    irf.add_argument("--target-r2", type=float, default=0.99, help="state-space fit target R² (default 0.99)")
+    irf.add_argument("--max-order", type=int, default=10, help="largest state-space order per pair (default 10)")
+    irf.add_argument("--no-fit", action="store_true", help="skip the state-space fit")
+    irf.add_argument("--plot", type=Path, metavar="PNG", help="write a figure of K(t), B and A")
+    irf.add_argument("-o", "--output", type=Path,
+                     help="write the database with IRFs to this file instead of updating it in place "
+                          "(built-in databases are never modified)")
+    irf.add_argument("--no-store", action="store_true", help="do not write anything")
+    irf.add_argument("--json", action="store_true", help="print the figures as JSON")
+    irf.set_defaults(func=_cmd_irf)
     return p
 
 
@@ -147,6 +178,45 @@ def _cmd_build(args) -> int:
     db = build_from_file(args.vessel, out, progress=not args.no_progress)
     print(f"wrote {out}: {db.n_freq} frequencies, {db.n_dir} directions, "
           f"{db.mesh.n_panels if db.mesh is not None else 0} panels")
+    return 0
+
+
+def _cmd_irf(args) -> int:
+    from boatland.hydro.bemio import write_bemio, write_radiation
+    from boatland.hydro.irf_report import irf_summary, irf_table, plot_irf
+    from boatland.irf.impulse import IRFSettings
+    from boatland.model.radiation import radiation_memory
+
+    db = _resolve_db(args.database)
+    dt = args.dt if args.dt is not None else min(0.05, np.pi / (1.2 * db.omega[-1]))
+    settings = IRFSettings(t_max=args.t_max, dt=dt, tail=args.tail, taper=args.taper, clean=args.clean,
+                           check_band=tuple(args.band) if args.band else None)
+    memory = radiation_memory(db, settings, fit=not args.no_fit, target_r2=args.target_r2,
+                              max_order=args.max_order)
+    print(json.dumps(irf_summary(memory), indent=2) if args.json else irf_table(memory))
+    if args.plot:
+        plot_irf(db, memory, args.plot)
+        if not args.json:
+            print(f"wrote {args.plot}")
+    if args.no_store:
+        return 0
+    target = args.output
+    if target is None:
+        if not Path(args.database).exists():
+            if not args.json:
+                print("built-in database: nothing stored (use -o FILE to write a copy with the IRFs)")
+            return 0
+        target = Path(args.database)
+        from boatland.hydro import detect_format
+
+        if detect_format(target) != "bemio":
+            raise BoatlandInputError(f"{target}: not a BEMIO database; import it first "
+                                     "('boatland hydro import') or give -o FILE")
+    else:
+        write_bemio(db, target)
+    write_radiation(target, memory, db.rho)
+    if not args.json:
+        print(f"stored IRFs{'' if args.no_fit else ' and state-space fit'} in {target}")
     return 0
 
 

@@ -54,3 +54,30 @@ def test_import_failure_writes_nothing(tmp_path):
     r = run("hydro", "import", bad, "-o", out)
     assert r.returncode == 2 and "Traceback" not in r.stderr
     assert not out.exists() and list(tmp_path.iterdir()) == [bad]
+
+
+def test_irf_stores_bemio_groups_and_plot(refdata, tmp_path):
+    import h5py
+
+    from boatland.hydro.bemio import read_radiation
+
+    db = tmp_path / "sphere.h5"
+    assert run("hydro", "import", refdata / "bemio_sphere" / "sphere.h5", "-o", db).returncode == 0
+    png = tmp_path / "irf.png"
+    r = run("irf", db, "--t-max", "15", "--band", "0.3", "5", "--plot", png)
+    assert r.returncode == 0, r.stderr
+    assert "heave" in r.stdout and "stored IRFs and state-space fit" in r.stdout
+    assert png.stat().st_size > 10_000
+    with h5py.File(db) as f:
+        K = f["body1/hydro_coeffs/radiation_damping/impulse_response_fun/K"]
+        assert K.shape[:2] == (6, 6) and abs(K[2, 2, 0] - 96.70) < 0.5
+        assert f["body1/hydro_coeffs/radiation_damping/state_space/it"][2, 2] <= 6
+    mem = read_radiation(db)
+    assert mem.state_space.pairs[(2, 2)].r2 >= 0.99
+
+
+def test_irf_bad_settings_exit_2(refdata, tmp_path):
+    db = tmp_path / "sphere.h5"
+    run("hydro", "import", refdata / "bemio_sphere" / "sphere.h5", "-o", db)
+    r = run("irf", db, "--t-max", "2")
+    assert r.returncode == 2 and "increase t_max" in r.stderr and "Traceback" not in r.stderr

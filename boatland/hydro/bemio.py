@@ -31,7 +31,7 @@ from boatland.atomic import atomic_path
 from boatland.errors import HydroDataError
 from boatland.model.hydrodb import HullMesh, HydroDB, Provenance
 
-__all__ = ["read_bemio", "write_bemio", "is_bemio"]
+__all__ = ["read_bemio", "write_bemio", "is_bemio", "write_radiation", "read_radiation"]
 
 _HC = "body1/hydro_coeffs"
 _EXTRA = "body1/boatland"
@@ -248,3 +248,101 @@ def _depth(raw, path) -> float:
                                  f"expected a depth in m or 'infinite', got {text!r}") from None
     d = float(np.asarray(raw, dtype=float).reshape(-1)[0])
     return np.inf if d <= 0 else d
+
+
+# ------------------------------------------------------------------------- radiation memory
+_IRF = f"{_HC}/radiation_damping/impulse_response_fun"
+_SS = f"{_HC}/radiation_damping/state_space"
+_XIRF = f"{_EXTRA}/irf"
+
+
+def write_radiation(path: str | Path, memory, rho: float) -> Path:
+    """Store IRFs and the state-space fit in an existing database file, atomically.
+
+    BEMIO groups (read by WEC-Sim, HydroChrono): ``impulse_response_fun/{K (6,6,Nt) K/ρ, t, w}`` and
+    ``state_space/{A,B,C,D}/all, it, r2t`` (C and D divided by ρ, orders padded to the largest).
+    Exact values, settings, checks and notes under ``/body1/boatland/irf``.
+    """
+    import shutil
+
+    import h5py
+
+    path = Path(path)
+    irf, ss = memory.irf, memory.state_space
+    with atomic_path(path) as tmp:
+        shutil.copyfile(path, tmp)
+        with h5py.File(tmp, "r+") as f:
+            for grp in (_IRF, _SS, _XIRF):
+                if grp in f:
+                    del f[grp]
+            f[f"{_IRF}/K"] = irf.K / rho
+            f[f"{_IRF}/t"] = irf.t.reshape(-1, 1)
+            f[f"{_IRF}/w"] = np.asarray(irf.check_band, dtype=float).reshape(-1, 1)
+            x = f.create_group(_XIRF)
+            x["K"], x["t"], x["A_inf"] = irf.K, irf.t, irf.A_inf
+            for key in ("ogilvie_spread", "err_B", "err_A", "truncation"):
+                x[key] = getattr(irf, key)
+            x["significant"] = irf.significant.astype(np.int8)
+            x.attrs["A_inf_source"] = irf.A_inf_source
+            x.attrs["settings"] = json.dumps({k: v for k, v in irf.settings.__dict__.items()})
+            x.attrs["omega_max_used"] = irf.omega_max_used
+            x.attrs["check_band"] = np.asarray(irf.check_band, dtype=float)
+            x.attrs["notes"] = json.dumps(list(irf.notes))
+            if ss is not None:
+                n = max([fit.order for fit in ss.pairs.values()] + [1])
+                A = np.zeros((6, 6, n, n)); B = np.zeros((6, 6, n, 1)); C = np.zeros((6, 6, 1, n))
+                for (i, j), fit in ss.pairs.items():
+                    k = fit.order
+                    A[i, j, :k, :k], B[i, j, :k, 0], C[i, j, 0, :k] = fit.A, fit.B, fit.C
+                f[f"{_SS}/A/all"], f[f"{_SS}/B/all"], f[f"{_SS}/C/all"] = A, B, C / rho
+                f[f"{_SS}/D/all"] = np.zeros((6, 6))
+                f[f"{_SS}/it"] = ss.orders.astype(float)
+                f[f"{_SS}/r2t"] = np.nan_to_num(ss.r2, nan=0.0)
+                xs = x.create_group("state_space")
+                xs["A"], xs["B"], xs["C"] = A, B, C
+                xs["order"] = ss.orders
+                xs["r2"] = ss.r2
+                xs["passivity"] = ss.passivity
+                xs.attrs["target_r2"] = ss.target_r2
+                xs.attrs["max_order"] = ss.max_order
+                xs.attrs["notes"] = json.dumps(list(ss.notes))
+    return path
+
+
+def read_radiation(path: str | Path):
+    """The :class:`boatland.model.radiation.RadiationMemory` stored by :func:`write_radiation`, or None.
+
+    Only boatland's own (exact) copy is read; IRFs from other tools are recomputed from B(ω).
+    """
+    import h5py
+
+    from boatland.irf.impulse import IRF, IRFSettings
+    from boatland.irf.statespace import PairFit, StateSpace
+    from boatland.model.radiation import RadiationMemory
+
+    with h5py.File(path, "r") as f:
+        if _XIRF not in f:
+            return None
+        x = f[_XIRF]
+        settings = json.loads(x.attrs["settings"])
+        if settings.get("check_band") is not None:
+            settings["check_band"] = tuple(settings["check_band"])
+        irf = IRF(t=x["t"][()], K=x["K"][()], A_inf=x["A_inf"][()], A_inf_source=str(x.attrs["A_inf_source"]),
+                  ogilvie_spread=x["ogilvie_spread"][()], err_B=x["err_B"][()], err_A=x["err_A"][()],
+                  truncation=x["truncation"][()], significant=x["significant"][()].astype(bool),
+                  settings=IRFSettings(**settings), omega_max_used=float(x.attrs["omega_max_used"]),
+                  notes=tuple(json.loads(x.attrs["notes"])), check_band=tuple(x.attrs["check_band"]))
+        ss = None
+        if "state_space" in x:
+            xs = x["state_space"]
+            order, r2 = xs["order"][()], xs["r2"][()]
+            A, B, C = xs["A"][()], xs["B"][()], xs["C"][()]
+            pairs = {}
+            for i in range(6):
+                for j in range(6):
+                    k = int(order[i, j])
+                    if irf.significant[i, j]:
+                        pairs[(i, j)] = PairFit(A[i, j, :k, :k], B[i, j, :k, 0], C[i, j, 0, :k], float(r2[i, j]))
+            ss = StateSpace(pairs=pairs, target_r2=float(xs.attrs["target_r2"]), max_order=int(xs.attrs["max_order"]),
+                            passivity=xs["passivity"][()], notes=tuple(json.loads(xs.attrs["notes"])))
+    return RadiationMemory(irf=irf, state_space=ss)

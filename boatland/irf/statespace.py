@@ -107,7 +107,7 @@ def impulse_response(fit: PairFit, t: np.ndarray) -> np.ndarray:
 
 
 def frequency_response(fit: PairFit, omega: np.ndarray) -> np.ndarray:
-    """:math:`\\hat K(i\\omega) = C (i\\omega I - A)^{-1} B`; Re = fitted B(ω), −Im/ω = A(ω) − A∞."""
+    """:math:`\\hat K(i\\omega) = C (i\\omega I - A)^{-1} B`; Re = fitted B(ω), Im/ω = A(ω) − A∞."""
     if fit.order == 0:
         return np.zeros(len(omega), complex)
     lam, V = np.linalg.eig(fit.A)

@@ -28,6 +28,7 @@ import numpy as np
 
 from boatland.conventions import DOF_NAMES, N_DOF
 from boatland.errors import HydroDataError
+from boatland.irf.impulse import find_spikes
 
 __all__ = ["HydroDB", "HullMesh", "Provenance", "rigid_body_mass_matrix", "skew"]
 
@@ -329,7 +330,7 @@ class HydroDB:
                 w = self.omega[neg]
                 warnings.append(f"negative damping B[{DOF_NAMES[i]}] at {neg.sum()} frequencies "
                                 f"({w.min():.3g}–{w.max():.3g} rad/s), min {B[i, i].min():.3g}")
-            spikes = _spikes(B[i, i])
+            spikes = find_spikes(B[i, i])
             if spikes.size:
                 warnings.append(f"possible irregular-frequency spikes in B[{DOF_NAMES[i]}] at ω ≈ "
                                 + ", ".join(f"{self.omega[k]:.3g}" for k in spikes[:5])
@@ -347,13 +348,3 @@ class HydroDB:
         warnings.extend(self.provenance.notes)
         return warnings
 
-
-def _spikes(b: np.ndarray, factor: float = 5.0) -> np.ndarray:
-    """Indices of isolated spikes: a sample far from both neighbours, relative to the local scale."""
-    if b.size < 5:
-        return np.array([], dtype=int)
-    mid = b[1:-1]
-    neighbours = 0.5 * (b[:-2] + b[2:])
-    jump = np.abs(mid - neighbours)
-    scale = np.abs(b[2:] - b[:-2]) + 1e-3 * np.max(np.abs(b))
-    return np.nonzero(jump > factor * scale)[0] + 1

@@ -1,0 +1,51 @@
+"""Radiation memory of a vessel: the IRFs and the state-space fit made from its :class:`HydroDB`.
+
+This is the bridge from the database (model layer) to the kernels of :mod:`boatland.irf`: it passes
+the database's arrays, its A∞ (when the solver gave one) and its length scale ∇^⅓, and bundles the
+result. Storage in the database file is in :mod:`boatland.hydro.bemio`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from boatland.irf.impulse import IRF, IRFSettings, compute_irf
+from boatland.irf.statespace import StateSpace, fit_state_space
+from boatland.model.hydrodb import HydroDB
+
+__all__ = ["RadiationMemory", "radiation_memory"]
+
+
+@dataclass(frozen=True, eq=False)
+class RadiationMemory:
+    """K(t) with its provenance and checks, and (optionally) the state-space fit of it."""
+
+    irf: IRF
+    state_space: StateSpace | None = None
+
+
+def radiation_memory(db: HydroDB, settings: IRFSettings | None = None, *, fit: bool = True,
+                     target_r2: float = 0.99, max_order: int = 10) -> RadiationMemory:
+    """Compute the radiation IRFs (and the state-space fit) of ``db``.
+
+    Parameters
+    ----------
+    db : HydroDB
+    settings : IRFSettings, optional
+        Defaults: T_K = 60 s, Δt_K = 0.05 s (or finer when the band needs it: π/Δt_K ≥ ω_max),
+        linear tail, clip negative damping; ``length_scale`` is set to ∇^⅓ of the vessel.
+    fit : bool
+        Also fit the state-space model.
+    target_r2, max_order : float, int
+        For :func:`boatland.irf.statespace.fit_state_space`.
+    """
+    if settings is None:
+        w_top = 1.2 * db.omega[-1]  # the default linear tail reaches 1.2 ω_max
+        settings = IRFSettings(dt=min(0.05, np.pi / w_top))
+    if settings.length_scale == 1.0 and db.disp_vol > 0:
+        settings = IRFSettings(**{**settings.__dict__, "length_scale": float(db.disp_vol ** (1 / 3))})
+    irf = compute_irf(db.omega, db.A, db.B, db.A_inf, settings)
+    ss = fit_state_space(irf, db.omega, db.B, target_r2=target_r2, max_order=max_order) if fit else None
+    return RadiationMemory(irf=irf, state_space=ss)
