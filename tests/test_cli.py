@@ -27,7 +27,7 @@ def test_import_then_info(refdata, tmp_path):
     r = run("hydro", "info", out, "--json")
     assert r.returncode == 0, r.stderr
     s = json.loads(r.stdout)
-    assert s["n_freq"] == 240 and s["omega_max"] == 12.0 and s["has_A_inf"]
+    assert s["n_freq"] == 240 and abs(s["omega_max"] - 12.0) < 1e-4 and s["has_A_inf"]
     assert 4.0 < s["natural_periods"]["heave"] < 4.8  # C33 = ρgπa², m = ρ⅔πa³, μ ≈ 0.42 → 4.36 s
     assert any("negative damping" in w for w in s["warnings"])
 

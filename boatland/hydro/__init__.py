@@ -43,7 +43,8 @@ def detect_format(path: str | Path) -> str:
                                          "Results/RadiationCoefficients.tec); expected one of: "
                              + "; ".join(FORMATS.values()))
     suffix = path.suffix.lower()
-    head = path.open("rb").read(8)
+    with path.open("rb") as fh:
+        head = fh.read(8)
     if head.startswith(b"\x89HDF"):
         return "capytaine" if suffix == ".nc" else "bemio"
     if head.startswith(b"CDF"):
@@ -55,14 +56,14 @@ def detect_format(path: str | Path) -> str:
         return "wamit"
     if suffix in (".ah1", ".lis"):
         return "aqwa"
-    if suffix == ".cal":
+    if suffix == ".cal" or (suffix == ".tec" and path.parent.name.lower() == "results"):
         return "nemoh"
     raise HydroDataError(path, None, f"unrecognised file kind {suffix or '(no suffix)'!r}; expected one of: "
                          + "; ".join(FORMATS.values()))
 
 
 def read_hydro(path: str | Path, *, fmt: str | None = None, rho: float | None = None,
-               g: float | None = None) -> tuple[HydroDB, str]:
+               g: float | None = None, **options) -> tuple[HydroDB, str]:
     """Read any supported BEM output into a :class:`HydroDB`.
 
     Parameters
@@ -74,6 +75,8 @@ def read_hydro(path: str | Path, *, fmt: str | None = None, rho: float | None = 
     rho, g : float, optional
         Water density and gravity, for formats that do not store them (WAMIT is non-dimensional
         in ρ). Ignored by formats that do.
+    **options
+        Passed to the reader (e.g. ``ref_point=`` for Capytaine files, which do not store it).
 
     Returns
     -------
@@ -95,5 +98,5 @@ def read_hydro(path: str | Path, *, fmt: str | None = None, rho: float | None = 
         return read_aqwa(path), fmt
     if fmt == "capytaine":
         from boatland.hydro.capytaine_nc import read_capytaine
-        return read_capytaine(path), fmt
+        return read_capytaine(path, **options), fmt
     raise HydroDataError(path, None, f"unknown format {fmt!r}; expected one of {', '.join(FORMATS)}")

@@ -163,7 +163,9 @@ class HydroDB:
         Rigid-body mass matrix about ``ref_point`` (see :func:`rigid_body_mass_matrix`); None when the
         source does not say.
     ref_point, cog, cob : ndarray, shape (3,)
-        Reference point, centre of gravity and centre of buoyancy [m], in the body-fixed frame.
+        Reference point (about which A, B, C, X, M are given), centre of gravity and centre of
+        buoyancy [m], in the frame of the BEM input: x, y as the solver's, z = 0 on the calm waterline.
+        The simulation's body frame (:mod:`boatland.conventions`) has its origin at ``ref_point``.
     disp_vol : float
         Displaced volume [m³].
     water_depth : float

@@ -127,3 +127,13 @@ def test_failed_write_leaves_nothing(sphere, tmp_path):
         bemio.np.bytes_ = orig
     assert target.read_bytes() == b"previous"
     assert [p.name for p in tmp_path.iterdir()] == ["db.h5"]
+
+
+def test_written_file_has_ordinary_permissions(sphere, tmp_path):
+    import os
+    import stat
+
+    umask = os.umask(0)
+    os.umask(umask)
+    path = write_bemio(sphere, tmp_path / "db.h5")
+    assert stat.S_IMODE(path.stat().st_mode) == 0o666 & ~umask
