@@ -116,11 +116,15 @@ def frequency_response(fit: PairFit, omega: np.ndarray) -> np.ndarray:
     return (c * w) @ (1.0 / (1j * np.asarray(omega)[None, :] - lam[:, None]))
 
 
-def _pencil_poles(y: np.ndarray, dt: float, n: int) -> np.ndarray:
-    N = y.size
-    L = N // 3
-    H = np.lib.stride_tricks.sliding_window_view(y, L + 1)  # (N-L, L+1) Hankel
-    _, _, Vh = np.linalg.svd(H, full_matrices=False)
+def _hankel_right_vectors(y: np.ndarray) -> np.ndarray:
+    """Right singular vectors of the (N−L)×(L+1) Hankel matrix of ``y`` (L = N/3), computed once per pair."""
+    L = y.size // 3
+    H = np.lib.stride_tricks.sliding_window_view(y, L + 1)
+    return np.linalg.svd(H, full_matrices=False)[2]
+
+
+def _pencil_poles(Vh: np.ndarray, dt: float, n: int) -> np.ndarray:
+    """Matrix-pencil poles of order n from the Hankel right singular vectors."""
     V = Vh[:n].T  # (L+1, n)
     z = np.linalg.eigvals(np.linalg.pinv(V[:-1]) @ V[1:])
     keep = ~((np.abs(z.imag) < 1e-12 * np.abs(z)) & (z.real <= 0)) & (np.abs(z) > 0)  # no Nyquist / zero poles
@@ -206,9 +210,10 @@ def fit_pair(t: np.ndarray, K: np.ndarray, target_r2: float = 0.99, max_order: i
     ts, Ks = t[::step], K[::step]
     dt = ts[1] - ts[0]
     ss_tot = np.sum((K - K.mean()) ** 2)
+    Vh = _hankel_right_vectors(Ks)
     best = None
     for n in range(2, max_order + 1):
-        poles = _pencil_poles(Ks, dt, n)
+        poles = _pencil_poles(Vh, dt, n)
         if poles.size == 0:
             continue
         Phi, _ = _basis(t, poles)
