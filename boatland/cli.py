@@ -12,8 +12,6 @@ import logging
 import sys
 from pathlib import Path
 
-import numpy as np
-
 from boatland import __version__
 from boatland.errors import BoatlandInputError
 
@@ -108,10 +106,11 @@ def _parser() -> argparse.ArgumentParser:
     irf.add_argument("database", nargs="?", default=DEFAULT_VESSEL,
                      help=f"database file or built-in vessel name (default: {DEFAULT_VESSEL})")
     irf.add_argument("--t-max", type=float, default=60.0, help="memory length T_K [s] (default 60)")
-    irf.add_argument("--dt", type=float, help="time step of K [s] (default min(0.05, π/(1.2 ω_max)))")
-    irf.add_argument("--tail", choices=("linear", "none", "asymptotic"), default="linear",
-                     help="B(ω) above the band: straight to zero over 20%% of ω_max (default), stop, or "
-                          "extrapolate ∝ ω^-n")
+    irf.add_argument("--dt", type=float, help="time step of K [s] (default min(0.05, π/(3 ω_max)))")
+    irf.add_argument("--tail", choices=("auto", "linear", "none", "asymptotic"), default="auto",
+                     help="B(ω) above the band: straight to zero over 20%% of ω_max, stop, extrapolate "
+                          "∝ ω^-n, or auto (default): linear when the damping has decayed at the top of "
+                          "the band, else ω^-n with a note")
     irf.add_argument("--taper", choices=("none", "cosine"), default="none", help="time window on K")
     irf.add_argument("--clean", choices=("clip", "cut", "none"), default="clip",
                      help="negative damping: clip to zero (default), cut the band, or keep")
@@ -185,10 +184,10 @@ def _cmd_irf(args) -> int:
     from boatland.hydro.bemio import write_bemio, write_radiation
     from boatland.hydro.irf_report import irf_summary, irf_table, plot_irf
     from boatland.irf.impulse import IRFSettings
-    from boatland.model.radiation import radiation_memory
+    from boatland.model.radiation import default_dt, radiation_memory
 
     db = _resolve_db(args.database)
-    dt = args.dt if args.dt is not None else min(0.05, np.pi / (1.2 * db.omega[-1]))
+    dt = args.dt if args.dt is not None else default_dt(db.omega[-1])
     settings = IRFSettings(t_max=args.t_max, dt=dt, tail=args.tail, taper=args.taper, clean=args.clean,
                            check_band=tuple(args.band) if args.band else None)
     memory = radiation_memory(db, settings, fit=not args.no_fit, target_r2=args.target_r2,

@@ -10,13 +10,17 @@ from __future__ import annotations
 
 from pathlib import Path
 
-__all__ = ["BoatlandInputError", "HydroDataError"]
+__all__ = ["BoatlandInputError", "BoatlandWarning", "HydroDataError"]
 
 
 class BoatlandInputError(ValueError):
     """A user mistake: one clear line, exit status 2 from the CLI."""
 
     exit_status = 2
+
+
+class BoatlandWarning(UserWarning):
+    """Something a user should know but that does not stop the work (e.g. a γ outside the usual range)."""
 
 
 class HydroDataError(BoatlandInputError):

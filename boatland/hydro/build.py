@@ -211,8 +211,14 @@ def _solve(cpt, solver, body, omega, betas_rad, rho, g, depth):
     reuses the LU-decomposed influence matrix for all problems. Failed problems give NaN."""
     from capytaine.bem.airy_waves import froude_krylov_force
 
+    from capytaine.tools.block_circulant_matrices import NestedBlockCirculantMatrix
+
     rad, dif = _problems(cpt, body, omega, betas_rad, rho, g, depth)
     results = solver.solve_all(rad + dif, progress_bar=False, keep_details=False)
+    # Capytaine 3.0.0 memoises NestedBlockCirculantMatrix.to_BlockCirculantMatrix with a class-level
+    # lru_cache (128 entries) that keeps every frequency's influence matrices alive: ~0.75 GB per
+    # frequency for a 3700-panel quarter-symmetric hull (measured), an OOM kill within a band.
+    NestedBlockCirculantMatrix.to_BlockCirculantMatrix.cache_clear()
     A = np.empty((6, 6))
     B = np.empty((6, 6))
     for j, res in enumerate(results[:len(rad)]):

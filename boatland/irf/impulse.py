@@ -12,8 +12,10 @@ Numerics, all explicit in :class:`IRFSettings` and reported in :class:`IRF`:
 - quadrature exact for B piecewise linear between the BEM samples (:mod:`boatland.irf.quadrature`),
   with B(0) = 0 below the first frequency;
 - the frequency tail above the band: ``"none"`` (B stops at ω_max), ``"linear"`` (straight to zero
-  over ``tail_width``), or ``"asymptotic"`` (B_N (ω_N/ω)^n with n fitted to the top of the band,
-  clamped to [2, 8], sampled to 3 ω_N);
+  over ``tail_width``), ``"asymptotic"`` (B_N (ω_N/ω)^n with n fitted to the top of the band,
+  clamped to [2, 8], sampled to 3 ω_N), or ``"auto"`` (the default: linear when every significant
+  diagonal damping has decayed below ``band_tol`` at the top of the band, else asymptotic — with a
+  note naming the DOF and what to change);
 - an optional cosine time taper over the last ``taper_fraction`` of [0, T_K];
 - negative damping cleaned per DOF pair: ``"clip"`` (diagonal clipped at zero, off-diagonals
   limited to |B_ij| ≤ √(B_ii B_jj), the 2×2 passivity condition) or ``"cut"`` (the band ends below the
@@ -27,6 +29,7 @@ Numerics, all explicit in :class:`IRFSettings` and reported in :class:`IRF`:
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -35,9 +38,9 @@ from boatland.conventions import DOF_NAMES
 from boatland.errors import BoatlandInputError
 from boatland.irf.quadrature import cos_transform, sin_transform
 
-__all__ = ["IRFSettings", "IRF", "compute_irf", "find_spikes", "significant_pairs", "pair_name", "IRFError"]
+__all__ = ["IRFSettings", "IRF", "compute_irf", "find_spikes", "describe_spikes", "significant_pairs", "pair_name", "IRFError"]
 
-TAILS = ("none", "linear", "asymptotic")
+TAILS = ("auto", "none", "linear", "asymptotic")
 CLEANS = ("clip", "cut", "none")
 TAPERS = ("none", "cosine")
 
@@ -60,7 +63,7 @@ class IRFSettings:
         Memory length T_K [s].
     dt : float
         Time step Δt_K of K(t) [s]; must satisfy π/Δt_K ≥ the highest frequency used.
-    tail : {"linear", "none", "asymptotic"}
+    tail : {"auto", "linear", "none", "asymptotic"}
         How B(ω) continues above the band.
     tail_width : float or None
         Width of the linear tail [rad/s]; default 20 % of ω_max.
@@ -85,7 +88,7 @@ class IRFSettings:
 
     t_max: float = 60.0
     dt: float = 0.05
-    tail: str = "linear"
+    tail: str = "auto"
     tail_width: float | None = None
     taper: str = "none"
     taper_fraction: float = 0.2
@@ -171,6 +174,16 @@ def find_spikes(b: np.ndarray, factor: float = 5.0) -> np.ndarray:
     jump = np.abs(mid - 0.5 * (b[:-2] + b[2:]))
     scale = np.abs(b[2:] - b[:-2]) + 1e-3 * np.max(np.abs(b))
     return np.nonzero(jump > factor * scale)[0] + 1
+
+
+def describe_spikes(name: str, omega: np.ndarray, b: np.ndarray) -> str | None:
+    """One line naming the sharp peaks of a damping curve (see :func:`find_spikes`), or None."""
+    spikes = find_spikes(b)
+    if not spikes.size:
+        return None
+    return (f"sharp peaks in B[{name}] at ω ≈ " + ", ".join(f"{omega[k]:.3g}" for k in spikes[:5])
+            + " rad/s: irregular frequencies if the BEM run had no lid, or waves trapped between the "
+              "demihulls of a catamaran (they make K ring)")
 
 
 def significant_pairs(B: np.ndarray, significance: float = 1e-3, length_scale: float = 1.0) -> np.ndarray:
@@ -310,22 +323,20 @@ def compute_irf(omega, A, B, A_inf=None, settings: IRFSettings | None = None) ->
 
     # the damping must have decayed at the top of the band
     sig = significant_pairs(Bc, s.significance, s.length_scale)
-    for i in range(6):
-        if not sig[i, i]:
-            continue
-        ratio = abs(Bc[i, i, -1]) / np.max(np.abs(Bc[i, i]))
+    top = {i: abs(Bc[i, i, -1]) / np.max(np.abs(Bc[i, i])) for i in range(6) if sig[i, i]}
+    if s.tail == "auto":
+        tail = "asymptotic" if max(top.values()) > s.band_tol else "linear"
+        s = dataclasses.replace(s, tail=tail)
+        notes.append(f"tail 'auto' → '{tail}'")
+    for i, ratio in top.items():
         if ratio > s.band_tol:
             msg = (f"B[{pair_name(i, i)}] at the top of the band (ω = {wb[-1]:.3g} rad/s) is still "
                    f"{100 * ratio:.0f} % of its peak: the band stops before the damping has decayed")
             if s.tail != "asymptotic":
                 raise IRFError(msg + "; extend the BEM band to higher ω, or accept an extrapolation with "
                                      "tail='asymptotic'")
-            notes.append(msg + " (extrapolated by the asymptotic tail)")
-        spikes = find_spikes(Bc[i, i])
-        if spikes.size:
-            notes.append(f"B[{pair_name(i, i)}] has spikes at ω ≈ "
-                         + ", ".join(f"{wb[k]:.3g}" for k in spikes[:5])
-                         + " rad/s (irregular frequencies? a lid in the BEM run removes them)")
+            notes.append(msg + " (extrapolated by the asymptotic tail; a wider BEM band avoids that)")
+    notes.extend(filter(None, (describe_spikes(pair_name(i, i), wb, Bc[i, i]) for i in top)))
 
     w_all, B_all = _tail(wb, Bc, s, notes)
     if np.pi / s.dt < w_all[-1] * (1 - 1e-12):

@@ -1,8 +1,9 @@
-"""Validated, immutable model objects (hydrodynamic database, vessel, ...)."""
+"""Validated, immutable model objects (hydrodynamic database, vessel, sea states, radiation memory)."""
 
 from boatland.model.hull import WigleyCatamaran
 from boatland.model.hydrodb import HullMesh, HydroDB, Provenance, rigid_body_mass_matrix
+from boatland.model.seastate import MeasuredRecord, RegularWave, SeaState, SpectrumPart
 from boatland.model.vessel import VesselSpec, load_vessel
 
-__all__ = ["HullMesh", "HydroDB", "Provenance", "VesselSpec", "WigleyCatamaran", "load_vessel",
-           "rigid_body_mass_matrix"]
+__all__ = ["HullMesh", "HydroDB", "MeasuredRecord", "Provenance", "RegularWave", "SeaState", "SpectrumPart",
+           "VesselSpec", "WigleyCatamaran", "load_vessel", "rigid_body_mass_matrix"]

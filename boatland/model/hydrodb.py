@@ -28,7 +28,7 @@ import numpy as np
 
 from boatland.conventions import DOF_NAMES, N_DOF
 from boatland.errors import HydroDataError
-from boatland.irf.impulse import find_spikes
+from boatland.irf.impulse import describe_spikes
 
 __all__ = ["HydroDB", "HullMesh", "Provenance", "rigid_body_mass_matrix", "skew"]
 
@@ -332,11 +332,9 @@ class HydroDB:
                 w = self.omega[neg]
                 warnings.append(f"negative damping B[{DOF_NAMES[i]}] at {neg.sum()} frequencies "
                                 f"({w.min():.3g}–{w.max():.3g} rad/s), min {B[i, i].min():.3g}")
-            spikes = find_spikes(B[i, i])
-            if spikes.size:
-                warnings.append(f"possible irregular-frequency spikes in B[{DOF_NAMES[i]}] at ω ≈ "
-                                + ", ".join(f"{self.omega[k]:.3g}" for k in spikes[:5])
-                                + " rad/s (no lid in the BEM run?)")
+            spikes = describe_spikes(DOF_NAMES[i], self.omega, B[i, i])
+            if spikes:
+                warnings.append(spikes)
             tail = abs(B[i, i, -1]) / bmax
             if tail > 0.05 and i in (2, 3, 4):
                 warnings.append(f"B[{DOF_NAMES[i]}] has not decayed at the top of the band "

@@ -15,7 +15,12 @@ from boatland.irf.impulse import IRF, IRFSettings, compute_irf
 from boatland.irf.statespace import StateSpace, fit_state_space
 from boatland.model.hydrodb import HydroDB
 
-__all__ = ["RadiationMemory", "radiation_memory"]
+__all__ = ["RadiationMemory", "radiation_memory", "default_dt"]
+
+
+def default_dt(omega_max: float) -> float:
+    """Δt_K = min(0.05 s, π / (3 ω_max)): resolves the band and an asymptotic tail to 3 ω_max."""
+    return float(min(0.05, np.pi / (3.0 * omega_max)))
 
 
 @dataclass(frozen=True, eq=False)
@@ -34,16 +39,15 @@ def radiation_memory(db: HydroDB, settings: IRFSettings | None = None, *, fit: b
     ----------
     db : HydroDB
     settings : IRFSettings, optional
-        Defaults: T_K = 60 s, Δt_K = 0.05 s (or finer when the band needs it: π/Δt_K ≥ ω_max),
-        linear tail, clip negative damping; ``length_scale`` is set to ∇^⅓ of the vessel.
+        Defaults: T_K = 60 s, Δt_K = 0.05 s (or finer when the band and its tail need it:
+        π/Δt_K ≥ 3 ω_max), tail "auto", clip negative damping; ``length_scale`` is set to ∇^⅓.
     fit : bool
         Also fit the state-space model.
     target_r2, max_order : float, int
         For :func:`boatland.irf.statespace.fit_state_space`.
     """
     if settings is None:
-        w_top = 1.2 * db.omega[-1]  # the default linear tail reaches 1.2 ω_max
-        settings = IRFSettings(dt=min(0.05, np.pi / w_top))
+        settings = IRFSettings(dt=default_dt(db.omega[-1]))
     if settings.length_scale == 1.0 and db.disp_vol > 0:
         settings = IRFSettings(**{**settings.__dict__, "length_scale": float(db.disp_vol ** (1 / 3))})
     irf = compute_irf(db.omega, db.A, db.B, db.A_inf, settings)

@@ -68,7 +68,7 @@ def test_bad_input_says_what_to_change(change, message):
     if change.get("nan"):
         b[3] = np.nan
     A, B = diag_db(w, b)
-    settings = IRFSettings(t_max=change.get("t_max", 30.0), dt=change.get("dt", 0.05))
+    settings = IRFSettings(t_max=change.get("t_max", 30.0), dt=change.get("dt", 0.05), tail="linear")
     with pytest.raises(IRFError, match=message):
         compute_irf(w, A, B, np.eye(6), settings)
 
@@ -79,6 +79,17 @@ def test_asymptotic_tail_accepts_a_short_band_with_a_note():
     irf = compute_irf(w, A, B, np.eye(6), IRFSettings(t_max=40, dt=0.05, tail="asymptotic"))
     assert any("extrapolated by the asymptotic tail" in n for n in irf.notes)
     assert irf.omega_max_used == pytest.approx(4.5)
+
+
+def test_auto_tail_is_linear_for_a_decayed_band_and_asymptotic_otherwise():
+    w = np.linspace(0.05, 6, 200)
+    A, B = diag_db(w, w ** 2 * np.exp(-2 * w) * 1e4)
+    assert "tail 'auto' → 'linear'" in compute_irf(w, A, B, np.eye(6), IRFSettings(t_max=30)).notes
+    short = w < 1.5
+    A, B = diag_db(w[short], (w ** 2 * np.exp(-1.5 * w) * 1e4)[short])
+    irf = compute_irf(w[short], A, B, np.eye(6), IRFSettings(t_max=40, dt=0.05))
+    assert "tail 'auto' → 'asymptotic'" in irf.notes
+    assert any("a wider BEM band avoids that" in n for n in irf.notes)
 
 
 def test_clip_and_cut_log_negative_damping():

@@ -77,8 +77,8 @@ def test_hull_mesh_validation():
 
 def test_diagnostics_flags_an_irregular_frequency_spike_not_a_smooth_peak():
     smooth = make_db(nf=80)
-    assert not any("spike" in m for m in smooth.diagnostics())
+    assert not any("sharp peaks" in m for m in smooth.diagnostics())
     B = smooth.B.copy()
     B[2, 2, 50] *= 4.0  # one sample far from both neighbours: the signature of an irregular frequency
     msgs = make_db(nf=80, B=B).diagnostics()
-    assert any("spikes in B[heave]" in m and f"{smooth.omega[50]:.3g}" in m for m in msgs)
+    assert any("sharp peaks in B[heave]" in m and f"{smooth.omega[50]:.3g}" in m for m in msgs)

@@ -1,0 +1,623 @@
+r"""Sea states as validated, immutable model objects that compile to wave components.
+
+Three kinds of waves, one interface — ``realise(seed, duration) -> Components`` (arrays of
+:mod:`boatland.waves.realisation`) and ``excitation(db, ...)`` for the force series:
+
+- :class:`SeaState`: a sum of :class:`SpectrumPart` (JONSWAP / Pierson–Moskowitz / TMA, each with its
+  own mean direction and cos-2s spreading — swell plus wind sea, seed 002 §4.2.3), realised with a
+  seed (random-frequency rule of :mod:`boatland.waves.realisation`);
+- :class:`RegularWave`: one Airy wave (H, T, direction, phase);
+- :class:`MeasuredRecord`: a gauge record replayed through its FFT (seed 001 §5.2.3).
+
+Every default is set here, once. Checks (errors raise :class:`~boatland.model.tomlspec.SpecError`, a
+:class:`~boatland.errors.BoatlandInputError`, naming the field and the valid range, all problems at
+once; doubtful but possible values warn with :class:`SeaStateWarning`):
+
+- Hs, Tp, H, T ≤ 0 → error; γ outside [1, 10] → error, outside [1, 7] → warning (measured
+  JONSWAP spectra: 1–7, seed 001 §2.4.1); σ_a, σ_b outside (0, 0.5] → error; spreading s ≤ 0 → error;
+- steepness past breaking → warning: H/λ (or Hs/λ_p) above Miche's (1944) limit
+  :math:`\tanh(kh)/7` (1/7 in deep water);
+- water depth ≤ 0, band or component counts that make no sense → error.
+
+Directions are ``direction_deg`` in the global frame, the direction the waves travel *towards*
+(:mod:`boatland.conventions`).
+"""
+
+from __future__ import annotations
+
+import difflib
+import math
+import warnings
+from dataclasses import dataclass, fields
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from boatland.errors import BoatlandWarning
+from boatland.model.hydrodb import HydroDB
+from boatland.model.records import read_elevation_csv
+from boatland.model.tomlspec import SpecError
+from boatland.waves.dispersion import wavenumber_scalar
+from boatland.waves.excitation import excitation_series
+from boatland.waves.measured import record_components
+from boatland.waves.realisation import (Components, concatenate, n_components_for, part_rng,
+                                        random_frequency_components, regular_components)
+from boatland.waves.spectra import SIGMA_A, SIGMA_B, bin_variance, spectrum_band, spreading_cos2s, tma
+
+__all__ = ["KINDS", "AMPLITUDES", "SeaStateWarning", "SpectrumPart", "SeaState", "RegularWave", "MeasuredRecord",
+           "spectrum_part_problems", "excitation_table", "wave_excitation"]
+
+KINDS = ("jonswap", "pm", "tma")
+AMPLITUDES = ("deterministic", "rayleigh")
+
+#: Default peak enhancement of JONSWAP and TMA parts (mean JONSWAP value, Hasselmann et al. 1973).
+GAMMA_DEFAULT = 3.3
+#: Measured JONSWAP γ lie in this range (seed 001 §2.4.1); outside it (but in GAMMA_LIMITS) → warning.
+GAMMA_USUAL = (1.0, 7.0)
+GAMMA_LIMITS = (1.0, 10.0)
+#: Miche (1944) limiting steepness H/λ = tanh(kh)/7.
+BREAKING_STEEPNESS = 1.0 / 7.0
+#: Above this share of the wave variance outside the database's band, excitation() warns.
+OUT_OF_BAND_WARN = 0.01
+
+
+class SeaStateWarning(BoatlandWarning):
+    """A wave input that is possible but probably not meant (outside the usual range, breaking, ...)."""
+
+
+def _warn(message: str, stacklevel: int = 4) -> None:
+    warnings.warn(message, SeaStateWarning, stacklevel=stacklevel)
+
+
+def _is_number(x: Any) -> bool:
+    return isinstance(x, (int, float, np.integer, np.floating)) and not isinstance(x, (bool, np.bool_))
+
+
+def _positive(out: list, key: str, x: Any, unit: str, what: str, allow_inf: bool = False) -> bool:
+    if not _is_number(x) or not (x > 0) or (math.isinf(x) and not allow_inf) or math.isnan(x):
+        rng = "> 0" + (f" {unit}" if unit else "") + (" (inf for deep water)" if allow_inf else "")
+        out.append((key, f"must be {rng} ({what}), got {x!r}"))
+        return False
+    return True
+
+
+def _finite(out: list, key: str, x: Any, what: str) -> bool:
+    if not _is_number(x) or not math.isfinite(x):
+        out.append((key, f"must be a finite number ({what}), got {x!r}"))
+        return False
+    return True
+
+
+def spectrum_part_problems(v: dict[str, Any], prefix: str = "") -> tuple[list[tuple[str, str]], list[str]]:
+    """Problems and warnings of one spectral part's values (SpectrumPart field names).
+
+    Returns ``(problems, warnings)``: problems as ``(key_path, message)`` with ``prefix`` prepended to
+    the field name (e.g. ``"sea.parts[1]."``), warnings as one-line texts — so a scenario loader can
+    report every problem of a file at once before building the object.
+    """
+    out: list[tuple[str, str]] = []
+    warn: list[str] = []
+    key = (lambda name: f"{prefix}{name}")
+    kind = v.get("kind", "jonswap")
+    if kind not in KINDS:
+        close = difflib.get_close_matches(str(kind), KINDS, n=1)
+        out.append((key("kind"), f"must be one of {', '.join(map(repr, KINDS))}, got {kind!r}"
+                    + (f" (did you mean {close[0]!r}?)" if close else "")))
+    _positive(out, key("Hs"), v.get("Hs"), "m", "significant wave height")
+    _positive(out, key("Tp"), v.get("Tp"), "s", "peak period")
+    gamma = v.get("gamma")
+    if gamma is not None:
+        if not _is_number(gamma) or not GAMMA_LIMITS[0] <= gamma <= GAMMA_LIMITS[1]:
+            out.append((key("gamma"), f"must be in [{GAMMA_LIMITS[0]:g}, {GAMMA_LIMITS[1]:g}] (JONSWAP peak "
+                                      f"enhancement; 1 = Pierson–Moskowitz, 3.3 = mean JONSWAP), got {gamma!r}"))
+        elif kind == "pm" and gamma != 1.0:
+            out.append((key("gamma"), f"a Pierson–Moskowitz part has γ = 1; got {gamma:g} "
+                                      "(use kind = 'jonswap' for a peaked spectrum)"))
+        elif gamma > GAMMA_USUAL[1]:
+            warn.append(f"{key('gamma')} = {gamma:g} is outside the usual range {GAMMA_USUAL[0]:g}–"
+                        f"{GAMMA_USUAL[1]:g} of measured JONSWAP spectra")
+    for name in ("sigma_a", "sigma_b"):
+        x = v.get(name, SIGMA_A if name == "sigma_a" else SIGMA_B)
+        if not _is_number(x) or not 0.0 < x <= 0.5:
+            out.append((key(name), f"must be in (0, 0.5] (JONSWAP spectral width; usual "
+                                   f"{SIGMA_A if name == 'sigma_a' else SIGMA_B}), got {x!r}"))
+    _finite(out, key("direction_deg"), v.get("direction_deg", 0.0), "direction the waves travel towards [deg]")
+    s = v.get("spreading")
+    if s is not None and (not _is_number(s) or not (s > 0) or not math.isfinite(s)):
+        out.append((key("spreading"), f"must be > 0 (cos-2s spreading exponent, e.g. 10 for wind sea) or "
+                                      f"absent for long-crested waves, got {s!r}"))
+    return out, warn
+
+
+def _steepness_warning(what: str, H: float, omega: float, h: float, g: float) -> str | None:
+    k = wavenumber_scalar(omega, h, g)
+    steep = H * k / (2.0 * math.pi)
+    limit = BREAKING_STEEPNESS * (math.tanh(k * h) if math.isfinite(h) else 1.0)
+    if steep > limit:
+        return (f"{what}: steepness {steep:.3f} (height / wavelength {2 * math.pi / k:.3g} m) is past the "
+                f"breaking limit {limit:.3f} (Miche: tanh(kh)/7); linear waves do not describe this sea")
+    return None
+
+
+def _depth_problems(out: list, h: Any, g: Any) -> None:
+    _positive(out, "water_depth", h, "m", "water depth", allow_inf=True)
+    if not _is_number(g) or not 9.7 <= g <= 9.9:
+        out.append(("g", f"must be the Earth's gravity in m/s² (9.78–9.83), got {g!r}"))
+
+
+class _Waves:
+    """What every wave model offers: components and the excitation series (shared code)."""
+
+    water_depth: float
+    g: float
+
+    def realise(self, seed=None, duration: float | None = None) -> Components:  # pragma: no cover
+        raise NotImplementedError
+
+    @property
+    def default_ramp_time(self) -> float:  # pragma: no cover
+        raise NotImplementedError
+
+    def excitation(self, db: HydroDB, *, seed=None, dt: float, n_steps: int, x0: float = 0.0, y0: float = 0.0,
+                   heading_deg: float = 0.0, ramp_time: float | None = None) -> np.ndarray:
+        """Excitation force series F (2 n_steps + 1, 6) on t = n dt/2 for a vessel in these waves.
+
+        Realises the waves for ``duration = n_steps dt`` and calls :func:`wave_excitation`; warns when
+        the database's water depth disagrees with this sea's at its peak frequency. ``ramp_time``
+        defaults to :attr:`default_ramp_time`.
+        """
+        duration = n_steps * dt
+        comps = self.realise(seed, duration)
+        waves = comps.omega > 0
+        if np.any(waves):
+            wref = float(comps.omega[waves][np.argmax(comps.a[waves])])
+            k_sea = wavenumber_scalar(wref, self.water_depth, self.g)
+            k_db = wavenumber_scalar(wref, db.water_depth, db.g)
+            if abs(k_db / k_sea - 1.0) > 0.01:
+                _warn(f"the database {db.name!r} was computed for water depth {db.water_depth:g} m, these waves "
+                      f"for {self.water_depth:g} m: wavelengths differ by {100 * abs(k_sea / k_db - 1):.1f} % at "
+                      f"ω = {wref:.3g} rad/s", stacklevel=3)
+        T_ramp = self.default_ramp_time if ramp_time is None else ramp_time
+        return wave_excitation(comps, db, dt=dt, n_steps=n_steps, x0=x0, y0=y0, heading_deg=heading_deg,
+                               ramp_time=T_ramp)
+
+
+@dataclass(frozen=True, kw_only=True)
+class SpectrumPart:
+    r"""One spectral wave system: JONSWAP, Pierson–Moskowitz or TMA, with its direction and spreading.
+
+    Parameters
+    ----------
+    Hs : float
+        Significant wave height H_m0 [m] (> 0). For ``"tma"`` the deep-water JONSWAP height (the finite-
+        depth spectrum carries less energy; :func:`boatland.waves.spectra.tma`).
+    Tp : float
+        Peak period [s] (> 0).
+    kind : {"jonswap", "pm", "tma"}
+        Spectrum shape (:mod:`boatland.waves.spectra`).
+    gamma : float or None
+        Peak enhancement γ in [1, 10] (warning outside 1–7); default 3.3 for JONSWAP and TMA, 1 for PM.
+    sigma_a, sigma_b : float
+        Spectral widths below / above the peak (0.07, 0.09).
+    direction_deg : float
+        Mean direction the waves travel towards, global frame [deg].
+    spreading : float or None
+        cos-2s spreading exponent s > 0 (short-crested), or None for long-crested waves (default).
+    """
+
+    Hs: float
+    Tp: float
+    kind: str = "jonswap"
+    gamma: float | None = None
+    sigma_a: float = SIGMA_A
+    sigma_b: float = SIGMA_B
+    direction_deg: float = 0.0
+    spreading: float | None = None
+
+    def __post_init__(self):
+        values = {f.name: getattr(self, f.name) for f in fields(self)}
+        problems, warns = spectrum_part_problems(values)
+        if problems:
+            raise SpecError("sea state", problems)
+        for w in warns:
+            _warn(f"sea state: {w}")
+        gamma = self.gamma if self.gamma is not None else (1.0 if self.kind == "pm" else GAMMA_DEFAULT)
+        for name, value in (("Hs", self.Hs), ("Tp", self.Tp), ("gamma", gamma), ("sigma_a", self.sigma_a),
+                            ("sigma_b", self.sigma_b), ("direction_deg", self.direction_deg)):
+            object.__setattr__(self, name, float(value))
+        if self.spreading is not None:
+            object.__setattr__(self, "spreading", float(self.spreading))
+
+    @property
+    def omega_p(self) -> float:
+        """Peak frequency ω_p = 2π/Tp [rad/s]."""
+        return 2.0 * math.pi / self.Tp
+
+    def spectrum(self, omega, water_depth: float = math.inf, g: float = 9.81) -> np.ndarray:
+        """S(ω) [m² s/rad] (the depth only matters for ``"tma"``)."""
+        h = water_depth if self.kind == "tma" else math.inf
+        return tma(omega, self.Hs, self.Tp, self.gamma, self.sigma_a, self.sigma_b, h, g)
+
+    def spreading_function(self, theta) -> np.ndarray:
+        """D(θ) [1/rad] about ``direction_deg`` (θ in rad, global frame); requires a spreading."""
+        if self.spreading is None:
+            raise ValueError("a long-crested part has no spreading function (all energy at direction_deg)")
+        return spreading_cos2s(theta, math.radians(self.direction_deg), self.spreading)
+
+
+@dataclass(frozen=True, kw_only=True)
+class SeaState(_Waves):
+    r"""An irregular sea: one or more spectral parts, realised with a seed.
+
+    Parameters
+    ----------
+    parts : SpectrumPart or sequence of SpectrumPart
+        The wave systems (e.g. swell + wind sea), each with its own direction and spreading.
+    water_depth : float
+        Water depth h [m]; ``inf`` (default) for deep water. Sets k_i and the TMA depth factor.
+    g : float
+        Gravity [m/s²].
+    n_components : int
+        Minimum number of components per part (default 256); the non-repetition rule may require
+        more: N = max(n_components, ⌈T_dur (ω_hi − ω_lo) / 2π⌉) (:mod:`boatland.waves.realisation`).
+    band_tail : float
+        Fraction of each part's variance left outside its band, half at each end (default 0.002:
+        the realised Hs is 0.999 of the target); :func:`boatland.waves.spectra.spectrum_band`.
+    omega_min, omega_max : float or None
+        Explicit band [rad/s] for every part instead of the ``band_tail`` rule.
+    amplitudes : {"deterministic", "rayleigh"}
+        a_i = √(2 S Δω) (default) or Rayleigh-distributed with that mean square.
+
+    Examples
+    --------
+    >>> sea = SeaState(parts=(SpectrumPart(Hs=1.3, Tp=5.0, direction_deg=0.0, spreading=10.0),
+    ...                       SpectrumPart(Hs=1.0, Tp=10.0, kind="pm", direction_deg=45.0)))
+    >>> comps = sea.realise(seed=1, duration=1800.0)
+    """
+
+    parts: tuple[SpectrumPart, ...]
+    water_depth: float = math.inf
+    g: float = 9.81
+    n_components: int = 256
+    band_tail: float = 0.002
+    omega_min: float | None = None
+    omega_max: float | None = None
+    amplitudes: str = "deterministic"
+
+    def __post_init__(self):
+        parts = (self.parts,) if isinstance(self.parts, SpectrumPart) else tuple(self.parts)
+        out: list[tuple[str, str]] = []
+        if not parts:
+            out.append(("parts", "must hold at least one SpectrumPart"))
+        for i, p in enumerate(parts):
+            if not isinstance(p, SpectrumPart):
+                out.append((f"parts[{i}]", f"must be a SpectrumPart, got {type(p).__name__}"))
+        _depth_problems(out, self.water_depth, self.g)
+        n = self.n_components
+        if not isinstance(n, (int, np.integer)) or isinstance(n, bool) or n < 1:
+            out.append(("n_components", f"must be an integer ≥ 1 (minimum wave components per part), got {n!r}"))
+        if not _is_number(self.band_tail) or not 0.0 < self.band_tail <= 0.1:
+            out.append(("band_tail", "must be in (0, 0.1] (variance fraction outside the band), "
+                                     f"got {self.band_tail!r}"))
+        lo, hi = self.omega_min, self.omega_max
+        if (lo is None) != (hi is None):
+            out.append(("omega_min" if lo is None else "omega_max", "give both omega_min and omega_max, or neither"))
+        elif lo is not None:
+            if _positive(out, "omega_min", lo, "rad/s", "lowest wave frequency") and \
+                    _positive(out, "omega_max", hi, "rad/s", "highest wave frequency") and not hi > lo:
+                out.append(("omega_max", f"must be > omega_min = {lo:g} rad/s, got {hi:g}"))
+        if self.amplitudes not in AMPLITUDES:
+            out.append(("amplitudes", f"must be one of {', '.join(map(repr, AMPLITUDES))}, got {self.amplitudes!r}"))
+        if out:
+            raise SpecError("sea state", out)
+        object.__setattr__(self, "parts", parts)
+        object.__setattr__(self, "water_depth", float(self.water_depth))
+        object.__setattr__(self, "g", float(self.g))
+        object.__setattr__(self, "n_components", int(n))
+        for i, p in enumerate(parts):
+            w = _steepness_warning(f"sea state: parts[{i}] (Hs {p.Hs:g} m, Tp {p.Tp:g} s)", p.Hs, p.omega_p,
+                                   self.water_depth, self.g)
+            if w:
+                _warn(w)
+
+    # ------------------------------------------------------------------ spectra
+    def spectrum(self, omega) -> np.ndarray:
+        """Sum of the parts' S(ω) [m² s/rad]."""
+        return sum(p.spectrum(omega, self.water_depth, self.g) for p in self.parts)
+
+    def directional_spectrum(self, omega, theta) -> np.ndarray:
+        r"""S(ω, θ) = Σ_p S_p(ω) D_p(θ) [m² s/rad²], shape (len(omega), len(theta)) (θ in rad).
+
+        A long-crested part is a line at its direction and cannot be written as a density: it is left
+        out here (see :meth:`spectrum`).
+        """
+        w = np.atleast_1d(np.asarray(omega, float))
+        th = np.atleast_1d(np.asarray(theta, float))
+        out = np.zeros((w.size, th.size))
+        for p in self.parts:
+            if p.spreading is not None:
+                out += np.outer(p.spectrum(w, self.water_depth, self.g), p.spreading_function(th))
+        return out
+
+    def band(self, part: int = 0) -> tuple[float, float]:
+        """Frequency band [rad/s] the components of ``parts[part]`` are drawn from."""
+        if self.omega_min is not None:
+            return float(self.omega_min), float(self.omega_max)
+        p = self.parts[part]
+        return spectrum_band(p.Tp, p.gamma, self.band_tail)
+
+    def n_components_for(self, duration: float) -> list[int]:
+        """Components per part for a record of ``duration`` seconds (the non-repetition rule)."""
+        return [max(self.n_components, n_components_for(duration, *self.band(i))) for i in range(len(self.parts))]
+
+    def hm0(self) -> float:
+        r""":math:`4\sqrt{m_0}` [m] of the whole spectrum (all parts; < the parts' Hs for TMA in shallow water)."""
+        m0 = 0.0
+        for p in self.parts:
+            if p.kind != "tma" or math.isinf(self.water_depth):
+                m0 += p.Hs ** 2 / 16.0  # exact by the normalisation
+                continue
+            wp = p.omega_p
+            edges = np.concatenate([np.linspace(0.05 * wp, 20.0 * wp, 401), [200.0 * wp]])
+            m0 += float(np.sum(bin_variance(edges, p.Hs, p.Tp, p.gamma, p.sigma_a, p.sigma_b,
+                                            self.water_depth, self.g)))
+        return 4.0 * math.sqrt(m0)
+
+    @property
+    def default_ramp_time(self) -> float:
+        """Start-up ramp [s]: twice the longest peak period of the parts."""
+        return 2.0 * max(p.Tp for p in self.parts)
+
+    # ------------------------------------------------------------------ realisation
+    def realise(self, seed=None, duration: float | None = None) -> Components:
+        """Seeded wave components for a record of ``duration`` seconds (parts concatenated in order).
+
+        Parameters
+        ----------
+        seed : int or numpy.random.SeedSequence
+            Same seed → bitwise the same components; part p draws from the seed's child p
+            (:func:`boatland.waves.realisation.part_rng`).
+        duration : float
+            Simulated time [s] (> 0): sets the component count by the non-repetition rule.
+        """
+        if seed is None:
+            raise ValueError("an irregular sea needs a seed (int or numpy.random.SeedSequence); "
+                             "unseeded waves could not be reproduced")
+        if duration is None or not _is_number(duration) or not duration > 0 or not math.isfinite(duration):
+            raise ValueError(f"duration must be a finite time > 0 s, got {duration!r}")
+        out = []
+        for i, (p, n) in enumerate(zip(self.parts, self.n_components_for(duration))):
+            lo, hi = self.band(i)
+            edges = np.linspace(lo, hi, n + 1)
+            h_tma = self.water_depth if p.kind == "tma" else math.inf
+            V = bin_variance(edges, p.Hs, p.Tp, p.gamma, p.sigma_a, p.sigma_b, h_tma, self.g)
+            out.append(random_frequency_components(
+                edges, V, math.radians(p.direction_deg), p.spreading or 0.0, part_rng(seed, i),
+                rayleigh=self.amplitudes == "rayleigh", h=self.water_depth, g=self.g))
+        return concatenate(out)
+
+
+@dataclass(frozen=True, kw_only=True)
+class RegularWave(_Waves):
+    r"""A regular (Airy) wave: η(0, 0, t) = (H/2) cos(2π t / T + phase).
+
+    Parameters
+    ----------
+    H : float
+        Wave height, crest to trough [m] (> 0).
+    T : float
+        Period [s] (> 0).
+    direction_deg : float
+        Direction of travel, global frame [deg].
+    phase_deg : float
+        Phase at the global origin [deg] (0: a crest at the origin at t = 0).
+    water_depth, g : float
+        Depth [m] (``inf`` deep) and gravity [m/s²].
+    """
+
+    H: float
+    T: float
+    direction_deg: float = 0.0
+    phase_deg: float = 0.0
+    water_depth: float = math.inf
+    g: float = 9.81
+
+    def __post_init__(self):
+        out: list[tuple[str, str]] = []
+        _positive(out, "H", self.H, "m", "wave height, crest to trough")
+        _positive(out, "T", self.T, "s", "wave period")
+        _finite(out, "direction_deg", self.direction_deg, "direction the wave travels towards [deg]")
+        _finite(out, "phase_deg", self.phase_deg, "phase at the global origin [deg]")
+        _depth_problems(out, self.water_depth, self.g)
+        if out:
+            raise SpecError("regular wave", out)
+        for f in fields(self):
+            object.__setattr__(self, f.name, float(getattr(self, f.name)))
+        w = _steepness_warning(f"regular wave (H {self.H:g} m, T {self.T:g} s)", self.H, self.omega,
+                               self.water_depth, self.g)
+        if w:
+            _warn(w)
+
+    @property
+    def omega(self) -> float:
+        return 2.0 * math.pi / self.T
+
+    @property
+    def default_ramp_time(self) -> float:
+        """Start-up ramp [s]: two periods."""
+        return 2.0 * self.T
+
+    def realise(self, seed=None, duration: float | None = None) -> Components:
+        """The one component (``seed`` and ``duration`` are ignored: a regular wave is deterministic)."""
+        return regular_components(self.H, self.T, math.radians(self.direction_deg), math.radians(self.phase_deg),
+                                  self.water_depth, self.g)
+
+
+@dataclass(frozen=True, kw_only=True, eq=False)
+class MeasuredRecord(_Waves):
+    r"""A wave gauge record replayed through its FFT (seed 001 §5.2.3; :mod:`boatland.waves.measured`).
+
+    Usually made with :meth:`from_csv`. Simulation time 0 is the first sample; the replay repeats
+    with the record length (:meth:`realise` warns when the duration exceeds it).
+
+    Parameters
+    ----------
+    eta : ndarray, shape (M,)
+        Elevation samples [m], uniformly spaced, finite.
+    dt : float
+        Sample step [s].
+    gauge_x, gauge_y : float
+        Gauge position in the global frame [m].
+    direction_deg : float
+        Direction the recorded (long-crested) waves travel towards, global frame [deg].
+    n_components : int or None
+        Keep the N largest components (seed 001 kept 20), or all (None, default: exact replay).
+    remove_mean : bool
+        Drop the record's mean (a water level, not a wave); default True.
+    water_depth, g : float
+        Depth [m] and gravity [m/s²] (for moving the record from the gauge to the vessel).
+    source : str
+        Where the record came from (file name), for messages.
+    """
+
+    eta: np.ndarray
+    dt: float
+    gauge_x: float = 0.0
+    gauge_y: float = 0.0
+    direction_deg: float = 0.0
+    n_components: int | None = None
+    remove_mean: bool = True
+    water_depth: float = math.inf
+    g: float = 9.81
+    source: str = "wave record"
+
+    def __post_init__(self):
+        out: list[tuple[str, str]] = []
+        eta = np.asarray(self.eta, dtype=float).reshape(-1) if np.ndim(self.eta) else np.zeros(0)
+        if eta.size < 4:
+            out.append(("eta", f"must hold at least 4 samples, got {eta.size}"))
+        elif not np.all(np.isfinite(eta)):
+            i = int(np.flatnonzero(~np.isfinite(eta))[0])
+            out.append(("eta", f"sample {i} is {eta[i]}; every sample must be finite"))
+        _positive(out, "dt", self.dt, "s", "sample step")
+        for name in ("gauge_x", "gauge_y", "direction_deg"):
+            _finite(out, name, getattr(self, name), "gauge position [m]" if name != "direction_deg" else
+                    "direction the waves travel towards [deg]")
+        n = self.n_components
+        if n is not None and (not isinstance(n, (int, np.integer)) or isinstance(n, bool) or n < 1):
+            out.append(("n_components", f"must be an integer ≥ 1 or None for all, got {n!r}"))
+        _depth_problems(out, self.water_depth, self.g)
+        if out:
+            raise SpecError(self.source, out)
+        eta = eta.copy()
+        eta.setflags(write=False)
+        object.__setattr__(self, "eta", eta)
+        for name in ("dt", "gauge_x", "gauge_y", "direction_deg", "water_depth", "g"):
+            object.__setattr__(self, name, float(getattr(self, name)))
+
+    @classmethod
+    def from_csv(cls, path, *, column: int = 1, time_rtol: float = 0.01, **kwargs) -> "MeasuredRecord":
+        """Read a CSV of time [s], elevation [m] (:func:`boatland.model.records.read_elevation_csv`).
+
+        ``column`` is the 0-based elevation column; ``time_rtol`` the allowed relative deviation of a
+        time step from the median. Other keywords are fields of this class.
+        """
+        t, eta = read_elevation_csv(path, column=column, rtol=time_rtol)
+        return cls(eta=eta, dt=float((t[-1] - t[0]) / (t.size - 1)), source=str(Path(path)), **kwargs)
+
+    @property
+    def length(self) -> float:
+        """Record length M Δt [s] (the replay's period)."""
+        return self.eta.size * self.dt
+
+    @property
+    def default_ramp_time(self) -> float:
+        """Start-up ramp [s]: two periods of the largest component."""
+        c = self.realise()
+        waves = c.omega > 0
+        if not np.any(waves):
+            return 0.0
+        return 2.0 * 2.0 * math.pi / float(c.omega[waves][np.argmax(c.a[waves])])
+
+    def realise(self, seed=None, duration: float | None = None) -> Components:
+        """The record's components, phases at the global origin (``seed`` is ignored)."""
+        if duration is not None and duration > self.length * (1 + 1e-9):
+            _warn(f"{self.source}: the simulation ({duration:g} s) is longer than the record ({self.length:g} s); "
+                  "the replay repeats the record periodically", stacklevel=3)
+        return record_components(self.eta, self.dt, self.gauge_x, self.gauge_y, math.radians(self.direction_deg),
+                                 self.n_components, self.remove_mean, self.water_depth, self.g)
+
+
+# ---------------------------------------------------------------------- excitation
+def excitation_table(db: HydroDB) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    r"""(omega, beta_deg, X) of a database for :func:`boatland.waves.excitation.excitation_series`.
+
+    Prepends ω = 0 with the exact long-wave limit :math:`X(0, \beta) = C_{:,2}` (0-based heave column
+    of the restoring matrix: a wave much longer than the vessel is a slow rise of the water level,
+    which pushes like a heave displacement of −a; real, in phase with the crest, the same for every
+    β), so the low end interpolates towards it instead of holding X(ω_min).
+    """
+    omega = np.asarray(db.omega, float)
+    X = np.asarray(db.X, complex)
+    if omega[0] > 0:
+        X0 = np.broadcast_to(np.asarray(db.C, float)[:, 2][:, None, None], (X.shape[0], X.shape[1], 1))
+        omega = np.concatenate([[0.0], omega])
+        X = np.concatenate([X0.astype(complex), X], axis=2)
+    return omega, np.asarray(db.wave_dir_deg, float), X
+
+
+def wave_excitation(components: Components, db: HydroDB, *, dt: float, n_steps: int, x0: float = 0.0,
+                    y0: float = 0.0, heading_deg: float = 0.0, ramp_time: float = 0.0) -> np.ndarray:
+    r"""Excitation force series on the RK4 grid t_n = n Δt/2, n = 0..2 n_steps, body frame.
+
+    .. math::
+        F(t) = r(t)\sum_i a_i\,\mathrm{Re}\{X(\omega_i, \theta_i - \psi)\,
+               e^{i(\omega_i t - k_i(x_0\cos\theta_i + y_0\sin\theta_i) + \varphi_i)}\}
+
+    (:mod:`boatland.waves.excitation`; X from :func:`excitation_table`). Warns
+    (:class:`SeaStateWarning`) when components above the database's ω_max — whose force is taken as
+    zero — carry more than 1 % of the wave variance.
+
+    Parameters
+    ----------
+    components : Components
+        The waves (:meth:`SeaState.realise` and friends).
+    db : HydroDB
+        The vessel's database.
+    dt : float
+        Integrator step [s].
+    n_steps : int
+        Number of steps: the series has 2 n_steps + 1 rows.
+    x0, y0 : float
+        Reference point of the vessel in the global frame [m].
+    heading_deg : float
+        Heading ψ of the vessel's x axis in the global frame [deg].
+    ramp_time : float
+        Half-cosine start-up ramp [s] (0 = none).
+
+    Returns
+    -------
+    ndarray, shape (2 n_steps + 1, 6)
+    """
+    if not (_is_number(dt) and dt > 0 and math.isfinite(dt)):
+        raise ValueError(f"dt must be a finite time step > 0 s, got {dt!r}")
+    if not isinstance(n_steps, (int, np.integer)) or n_steps < 0:
+        raise ValueError(f"n_steps must be an integer ≥ 0, got {n_steps!r}")
+    if not (_is_number(ramp_time) and ramp_time >= 0 and math.isfinite(ramp_time)):
+        raise ValueError(f"ramp_time must be a finite time ≥ 0 s, got {ramp_time!r}")
+    for name, v in (("x0", x0), ("y0", y0), ("heading_deg", heading_deg)):
+        if not (_is_number(v) and math.isfinite(v)):
+            raise ValueError(f"{name} must be a finite number, got {v!r}")
+    omega, beta, X = excitation_table(db)
+    F, _, n_above = excitation_series(components, omega, beta, X, float(x0), float(y0),
+                                      math.radians(heading_deg), 0.0, 0.5 * dt, 2 * int(n_steps) + 1,
+                                      float(ramp_time))
+    if n_above:
+        above = components.omega > omega[-1]
+        share = float(np.sum(components.a[above] ** 2) / max(np.sum(components.a ** 2), 1e-300))
+        if share > OUT_OF_BAND_WARN:
+            _warn(f"{n_above} of {components.size} wave components ({100 * share:.1f} % of the wave variance) lie "
+                  f"above the database's highest frequency {omega[-1]:g} rad/s; their excitation is taken as zero "
+                  f"(extend the database's band or lower omega_max)", stacklevel=3)
+    return F

@@ -1,0 +1,135 @@
+r"""Sums of harmonic components on time grids: wave elevation and (through excitation) forces.
+
+Linear superposition (seed 000 eq. 3.32, seed 001 eq. 2.45) in the exp(+iωt) convention of
+:mod:`boatland.conventions`:
+
+.. math::
+    \eta(x, y, t) = \sum_i a_i \cos\left(\omega_i t - k_i (x\cos\theta_i + y\sin\theta_i) + \varphi_i\right)
+                  = \mathrm{Re}\sum_i a_i e^{i(\varphi_i - k_i(x\cos\theta_i + y\sin\theta_i))} e^{i\omega_i t},
+
+θ_i = direction of travel (global frame), φ_i = phase at the global origin.
+
+Two kernels, both serial (no ``parallel=True``, no threads), so results do not depend on the number of
+threads:
+
+- :func:`harmonic_sum` on a uniform time grid: :math:`y_j(t_n) = \mathrm{Re}\sum_i c_{ji} e^{i\omega_i t_n}`
+  by phasor rotation, :math:`z_i \leftarrow z_i e^{i\omega_i\Delta t}` (one complex multiply per
+  component and step instead of a cos and a sin), re-anchored every :data:`REANCHOR` steps with the
+  exact :math:`e^{i\omega_i t_n}` so the rounding error stays below ~1e-13 of the amplitude over any
+  record length. The component sums are vectorised (reassociated) — same result on every run.
+- :func:`elevation` at arbitrary points and times by direct cosine evaluation.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba
+import numpy as np
+
+__all__ = ["REANCHOR", "harmonic_sum", "elevation", "elevation_series"]
+
+#: Steps between exact re-evaluations of the phasors in :func:`harmonic_sum`.
+REANCHOR = 256
+
+_FAST = {"reassoc", "contract"}  # lets LLVM vectorise the component sums; deterministic per build
+
+
+@numba.njit(cache=True, fastmath=_FAST)
+def _harmonic_sum(omega, c_re, c_im, t0, h, out):
+    n_t, m = out.shape
+    N = omega.size
+    zr = np.empty(N)
+    zi = np.empty(N)
+    rr = np.empty(N)
+    ri = np.empty(N)
+    for i in range(N):
+        rr[i] = math.cos(omega[i] * h)
+        ri[i] = math.sin(omega[i] * h)
+    for n in range(n_t):
+        if n % REANCHOR == 0:
+            t = t0 + n * h
+            for i in range(N):
+                zr[i] = math.cos(omega[i] * t)
+                zi[i] = math.sin(omega[i] * t)
+        for j in range(m):
+            s = 0.0
+            for i in range(N):
+                s += c_re[j, i] * zr[i] - c_im[j, i] * zi[i]
+            out[n, j] = s
+        for i in range(N):
+            a = zr[i]
+            zr[i] = a * rr[i] - zi[i] * ri[i]
+            zi[i] = a * ri[i] + zi[i] * rr[i]
+
+
+def harmonic_sum(omega, c, t0: float, h: float, n: int) -> np.ndarray:
+    r"""Real sums :math:`y_j(t_n) = \mathrm{Re}\sum_i c_{ji}\, e^{i\omega_i t_n}`, :math:`t_n = t_0 + n h`.
+
+    Parameters
+    ----------
+    omega : ndarray, shape (N,)
+        Component frequencies [rad/s].
+    c : ndarray of complex, shape (m, N)
+        Complex amplitudes of each output j (exp(+iωt) convention).
+    t0, h : float
+        First time and step of the grid [s].
+    n : int
+        Number of time points.
+
+    Returns
+    -------
+    ndarray, shape (n, m)
+    """
+    c = np.atleast_2d(np.asarray(c, dtype=complex))
+    out = np.empty((int(n), c.shape[0]))
+    _harmonic_sum(np.ascontiguousarray(omega, dtype=float), np.ascontiguousarray(c.real),
+                  np.ascontiguousarray(c.imag), float(t0), float(h), out)
+    return out
+
+
+@numba.njit(cache=True)
+def _elevation(omega, k, a, theta, phi, x, y, t, out):
+    N = omega.size
+    for p in range(x.size):
+        for i in range(N):
+            psi = phi[i] - k[i] * (x[p] * math.cos(theta[i]) + y[p] * math.sin(theta[i]))
+            for n in range(t.size):
+                out[n, p] += a[i] * math.cos(omega[i] * t[n] + psi)
+
+
+def elevation(components, x, y, t) -> np.ndarray:
+    r"""Surface elevation η(x, y, t) [m] of a set of components at points and times.
+
+    Parameters
+    ----------
+    components : Components
+        From :mod:`boatland.waves.realisation` (omega, k, a, theta, phi).
+    x, y : array_like, shape (P,) or scalars
+        Horizontal positions in the global frame [m].
+    t : array_like, shape (T,) or scalar
+        Times [s].
+
+    Returns
+    -------
+    ndarray, shape (T, P)
+        Elevation, direct evaluation of the sum in the module docstring (cost T·P·N cosines; use
+        :func:`elevation_series` for long uniform records).
+    """
+    xs = np.atleast_1d(np.asarray(x, dtype=float)).ravel()
+    ys = np.atleast_1d(np.asarray(y, dtype=float)).ravel()
+    xs, ys = np.broadcast_arrays(xs, ys)
+    ts = np.atleast_1d(np.asarray(t, dtype=float)).ravel()
+    out = np.zeros((ts.size, xs.size))
+    cp = components
+    _elevation(np.asarray(cp.omega, float), np.asarray(cp.k, float), np.asarray(cp.a, float),
+               np.asarray(cp.theta, float), np.asarray(cp.phi, float),
+               np.ascontiguousarray(xs), np.ascontiguousarray(ys), ts, out)
+    return out
+
+
+def elevation_series(components, x: float, y: float, t0: float, h: float, n: int) -> np.ndarray:
+    """Elevation [m] at one point (x, y) on the uniform grid t_n = t0 + n h, n < ``n`` (fast)."""
+    cp = components
+    c = cp.a * np.exp(1j * (cp.phi - cp.k * (x * np.cos(cp.theta) + y * np.sin(cp.theta))))
+    return harmonic_sum(cp.omega, c[None, :], t0, h, n)[:, 0]
