@@ -116,8 +116,8 @@ def _parser() -> argparse.ArgumentParser:
                      help="negative damping: clip to zero (default), cut the band, or keep")
     irf.add_argument("--band", type=float, nargs=2, metavar=("LO", "HI"),
                      help="frequency band [rad/s] of the round-trip check (default: the whole band)")
-    irf.add_argument("--target-r2", type=float, default=0.99, help="state-space fit target R² (default 0.99)")
-    irf.add_argument("--max-order", type=int, default=10, help="largest state-space order per pair (default 10)")
+    irf.add_argument("--target-r2", type=float, default=0.999, help="state-space fit target R² (default 0.999)")
+    irf.add_argument("--max-order", type=int, default=12, help="largest state-space order per pair (default 12)")
     irf.add_argument("--no-fit", action="store_true", help="skip the state-space fit")
     irf.add_argument("--plot", type=Path, metavar="PNG", help="write a figure of K(t), B and A")
     irf.add_argument("-o", "--output", type=Path,

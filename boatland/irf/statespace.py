@@ -192,7 +192,7 @@ def _realise(poles, coef):
     return A, np.concatenate(blocks_B), np.concatenate(blocks_C)
 
 
-def fit_pair(t: np.ndarray, K: np.ndarray, target_r2: float = 0.99, max_order: int = 10,
+def fit_pair(t: np.ndarray, K: np.ndarray, target_r2: float = 0.999, max_order: int = 12,
              max_samples: int = 400, omega: np.ndarray | None = None, B_ref: np.ndarray | None = None,
              passivity_tol: float = 0.01) -> PairFit:
     """Fit a stable state-space system to one sampled IRF ``K(t)`` (uniform ``t``).
@@ -236,8 +236,8 @@ def fit_pair(t: np.ndarray, K: np.ndarray, target_r2: float = 0.99, max_order: i
     return best
 
 
-def fit_state_space(irf: IRF, omega_band: np.ndarray, B_band: np.ndarray, *, target_r2: float = 0.99,
-                    max_order: int = 10, passivity_tol: float = 0.01) -> StateSpace:
+def fit_state_space(irf: IRF, omega_band: np.ndarray, B_band: np.ndarray, *, target_r2: float = 0.999,
+                    max_order: int = 12, passivity_tol: float = 0.01) -> StateSpace:
     """Fit every significant DOF pair of ``irf``; check stability and passivity.
 
     Parameters

@@ -32,7 +32,7 @@ class RadiationMemory:
 
 
 def radiation_memory(db: HydroDB, settings: IRFSettings | None = None, *, fit: bool = True,
-                     target_r2: float = 0.99, max_order: int = 10) -> RadiationMemory:
+                     target_r2: float = 0.999, max_order: int = 12) -> RadiationMemory:
     """Compute the radiation IRFs (and the state-space fit) of ``db``.
 
     Parameters
@@ -44,7 +44,9 @@ def radiation_memory(db: HydroDB, settings: IRFSettings | None = None, *, fit: b
     fit : bool
         Also fit the state-space model.
     target_r2, max_order : float, int
-        For :func:`boatland.irf.statespace.fit_state_space`.
+        For :func:`boatland.irf.statespace.fit_state_space`. R² = 0.999 by default: with 0.99 the
+        hemisphere's free decay by state space differs from the convolution by 1.1–2.2 % RMS, with
+        0.999 by 0.4–0.7 % (measured; tests/integrate).
     """
     if settings is None:
         settings = IRFSettings(dt=default_dt(db.omega[-1]))

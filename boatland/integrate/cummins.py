@@ -1,0 +1,261 @@
+r"""Fixed-step RK4 of the Cummins equation with radiation memory by convolution or state space.
+
+.. math::
+    (M + A_\infty)\ddot x + \mu(t) + B_v \dot x + B_q |\dot x|\dot x + C x
+        = F_{exc}(t) + F_T(t, x) + F_c(t, x, \dot x), \qquad
+    \mu(t) = \int_0^t K(t-\tau)\,\dot x(\tau)\,d\tau
+
+(Cummins 1962; seed 000 eq. 3.40 and §4.2 for RK4 with the trapezoid convolution).
+
+Stage consistency of the memory (seed 000 §4.2; DESIGN.md §1): at the RK4 stage time
+:math:`t_n + c\,\Delta t` (c = 0, ½, 1) the integral is split into a history part over
+:math:`[0, t_n]` — trapezoid over the stored step velocities, fixed during the step — and the current
+interval :math:`[t_n, t_n + c\Delta t]`, trapezoid with the stage velocity:
+
+.. math::
+    \mu_c = \underbrace{\sum_{m=0}^{n} w_m \Delta t\, K((n-m+c)\Delta t)\,\dot x_m}_{H_c\ \text{(fixed in the step)}}
+          + \frac{c\Delta t}{2}\left[K(c\Delta t)\dot x_n + K(0)\,\dot x_{stage}\right]
+
+with :math:`w_0 = w_n = ½`. K is therefore sampled every Δt/2. The history at c = 0 of step n+1 is
+the c = 1 history of step n plus the last interval with the accepted velocity, so two history sums
+are computed per step, over the significant DOF pairs only.
+
+State space: the fitted systems :math:`\dot z = A_r z + B_r \dot x_j`, :math:`\mu_{ij} = C_r z` are
+appended to the RK4 state, so they are consistent at every stage by construction.
+
+All arrays are SI, DOF order surge..yaw, body motions small (linear hydrodynamics) while positions
+of force points follow the exact rotation :math:`R(\phi,\theta,\psi)` (z-y-x Euler angles).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+__all__ = ["rotation_matrix", "run_cummins", "STATUS_OK", "STATUS_NAN", "STATUS_RUNAWAY", "STATUS_MESSAGES"]
+
+STATUS_OK = 0
+STATUS_NAN = 1
+STATUS_RUNAWAY = 2
+STATUS_MESSAGES = {
+    STATUS_OK: "completed",
+    STATUS_NAN: "the state became NaN or infinite",
+    STATUS_RUNAWAY: "runaway motion (a displacement or rotation beyond the limit)",
+}
+
+
+@njit(cache=True)
+def rotation_matrix(phi, theta, psi):
+    """Body → global rotation for roll φ, pitch θ, yaw ψ (z-y-x convention, R = Rz(ψ) Ry(θ) Rx(φ))."""
+    cf, sf = np.cos(phi), np.sin(phi)
+    ct, st = np.cos(theta), np.sin(theta)
+    cp, sp = np.cos(psi), np.sin(psi)
+    R = np.empty((3, 3))
+    R[0, 0] = cp * ct
+    R[0, 1] = cp * st * sf - sp * cf
+    R[0, 2] = cp * st * cf + sp * sf
+    R[1, 0] = sp * ct
+    R[1, 1] = sp * st * sf + cp * cf
+    R[1, 2] = sp * st * cf - cp * sf
+    R[2, 0] = -st
+    R[2, 1] = ct * sf
+    R[2, 2] = ct * cf
+    return R
+
+
+@njit(cache=True)
+def _thrust(x, T, r_p, out):
+    """Generalised force of a push T along the body x axis applied at body point r_p (exact rotation)."""
+    R = rotation_matrix(x[3], x[4], x[5])
+    f0, f1, f2 = T * R[0, 0], T * R[1, 0], T * R[2, 0]
+    rx = R[0, 0] * r_p[0] + R[0, 1] * r_p[1] + R[0, 2] * r_p[2]
+    ry = R[1, 0] * r_p[0] + R[1, 1] * r_p[1] + R[1, 2] * r_p[2]
+    rz = R[2, 0] * r_p[0] + R[2, 1] * r_p[1] + R[2, 2] * r_p[2]
+    out[0] += f0
+    out[1] += f1
+    out[2] += f2
+    out[3] += ry * f2 - rz * f1
+    out[4] += rz * f0 - rx * f2
+    out[5] += rx * f1 - ry * f0
+
+
+@njit(cache=True)
+def _history(vbuf, head, count, Kh, pairs_i, pairs_j, c2, dt, out):
+    """H_c = Σ_m w_m Δt K((n−m+c)Δt) v_m over the stored velocities (ring buffer, newest at ``head``).
+
+    ``c2`` = 2c (0, 1 or 2) indexes the half-step IRF samples ``Kh`` (npairs, nK2).
+    """
+    for d in range(6):
+        out[d] = 0.0
+    if count < 2:  # [0, t_n] is empty at the first step
+        return
+    nb = vbuf.shape[0]
+    nK2 = Kh.shape[1]
+    for p in range(pairs_i.shape[0]):
+        i, j = pairs_i[p], pairs_j[p]
+        s = 0.0
+        for lag in range(count):
+            k = 2 * lag + c2
+            if k >= nK2:
+                break
+            w = 0.5 if (lag == 0 or lag == count - 1) else 1.0
+            s += w * Kh[p, k] * vbuf[(head - lag) % nb, j]
+        out[i] += s * dt
+
+
+@njit(cache=True)
+def _rhs(t_idx, x, v, z, mu_hist, c2, v_n, dt, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p,
+         Kh, pairs_i, pairs_j, conv, ss_A, ss_B, ss_C, ss_in, ss_out, dz, acc, F):
+    """Accelerations ``acc`` and state-space derivative ``dz`` at one stage."""
+    for d in range(6):
+        F[d] = F_ext[t_idx, d] - Bv[d] * v[d] - Bq[d] * abs(v[d]) * v[d]
+        for e in range(6):
+            F[d] -= C[d, e] * x[e]
+    if thrust[t_idx] != 0.0:
+        _thrust(x, thrust[t_idx], r_p, F)
+    if conv:
+        cdt = 0.5 * c2 * dt
+        for p in range(pairs_i.shape[0]):
+            i, j = pairs_i[p], pairs_j[p]
+            cur = 0.5 * cdt * (Kh[p, c2] * v_n[j] + Kh[p, 0] * v[j]) if c2 > 0 else 0.0
+            F[i] -= cur
+        for d in range(6):
+            F[d] -= mu_hist[d]
+    else:
+        n_s = z.shape[0]
+        for s in range(n_s):
+            acc_z = ss_B[s] * v[ss_in[s]]
+            for r in range(n_s):
+                acc_z += ss_A[s, r] * z[r]
+            dz[s] = acc_z
+            F[ss_out[s]] -= ss_C[s] * z[s]
+    for d in range(6):
+        a = 0.0
+        for e in range(6):
+            a += Mt_inv[d, e] * F[e]
+        acc[d] = a
+
+
+@njit(cache=True)
+def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
+                conv, Kh, pairs_i, pairs_j, n_hist, ss_A, ss_B, ss_C, ss_in, ss_out,
+                limit_trans, limit_rot, out_x, out_v):
+    """Integrate the Cummins equation with classic RK4; returns ``(status, last_step)``.
+
+    Parameters
+    ----------
+    dt : float
+        Time step [s].
+    n_steps : int
+        Number of steps; ``out_x``, ``out_v`` have ``n_steps + 1`` rows.
+    Mt_inv : (6, 6)
+        (M + A∞)⁻¹.
+    C : (6, 6)
+        Restoring matrix.
+    Bv, Bq : (6,)
+        Additional linear and quadratic damping.
+    F_ext : (2 n_steps + 1, 6)
+        External force without memory (wave excitation), at half steps t = k Δt / 2.
+    thrust : (2 n_steps + 1,)
+        Push along the body x axis [N] at half steps (ramp included); ``r_p`` (3,) its body point.
+    x0, v0 : (6,)
+        Initial displacement and velocity.
+    conv : bool
+        True: convolution memory with ``Kh`` (npairs, nK2) = K(k Δt/2) of the pairs
+        (``pairs_i``, ``pairs_j``) over ``n_hist`` past steps. False: state space with the block
+        system ``ss_A`` (ns, ns), ``ss_B`` (ns,), ``ss_C`` (ns,), input DOF ``ss_in`` (ns,),
+        output DOF ``ss_out`` (ns,).
+    limit_trans, limit_rot : float
+        Runaway limits [m], [rad].
+    out_x, out_v : (n_steps + 1, 6)
+        Filled with the trajectory.
+
+    Returns
+    -------
+    status : int
+        :data:`STATUS_OK`, :data:`STATUS_NAN` or :data:`STATUS_RUNAWAY` (see :data:`STATUS_MESSAGES`).
+    last : int
+        Last step written.
+    """
+    n_s = ss_A.shape[0]
+    x = x0.copy()
+    v = v0.copy()
+    z = np.zeros(n_s)
+    nb = max(n_hist + 1, 1)
+    vbuf = np.zeros((nb, 6))
+    head = 0
+    count = 1
+    vbuf[0, :] = v
+    H0 = np.zeros(6)
+    Hh = np.zeros(6)
+    H1 = np.zeros(6)
+    tmp = np.zeros(6)
+    F = np.zeros(6)
+    k1x, k2x, k3x, k4x = np.empty(6), np.empty(6), np.empty(6), np.empty(6)
+    k1v, k2v, k3v, k4v = np.empty(6), np.empty(6), np.empty(6), np.empty(6)
+    k1z, k2z, k3z, k4z = np.empty(n_s), np.empty(n_s), np.empty(n_s), np.empty(n_s)
+    xs, vs, zs = np.empty(6), np.empty(6), np.empty(n_s)
+    out_x[0, :] = x
+    out_v[0, :] = v
+    for n in range(n_steps):
+        if conv:
+            # H0 is the full integral at t_n without the K(0) v_n end term (added as "current" below)
+            _history(vbuf, head, count, Kh, pairs_i, pairs_j, 0, dt, H0)
+            _history(vbuf, head, count, Kh, pairs_i, pairs_j, 1, dt, Hh)
+            _history(vbuf, head, count, Kh, pairs_i, pairs_j, 2, dt, H1)
+        # stage 1 (c = 0): μ(t_n) = H0 exactly (the current interval is empty)
+        _rhs(2 * n, x, v, z, H0, 0, v, dt, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, Kh, pairs_i, pairs_j,
+             conv, ss_A, ss_B, ss_C, ss_in, ss_out, k1z, k1v, F)
+        for d in range(6):
+            k1x[d] = v[d]
+            xs[d] = x[d] + 0.5 * dt * k1x[d]
+            vs[d] = v[d] + 0.5 * dt * k1v[d]
+        for s in range(n_s):
+            zs[s] = z[s] + 0.5 * dt * k1z[s]
+        # stage 2 (c = ½)
+        _rhs(2 * n + 1, xs, vs, zs, Hh, 1, v, dt, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, Kh, pairs_i, pairs_j,
+             conv, ss_A, ss_B, ss_C, ss_in, ss_out, k2z, k2v, F)
+        for d in range(6):
+            k2x[d] = vs[d]
+            xs[d] = x[d] + 0.5 * dt * k2x[d]
+            tmp[d] = v[d] + 0.5 * dt * k2v[d]
+        for d in range(6):
+            vs[d] = tmp[d]
+        for s in range(n_s):
+            zs[s] = z[s] + 0.5 * dt * k2z[s]
+        # stage 3 (c = ½)
+        _rhs(2 * n + 1, xs, vs, zs, Hh, 1, v, dt, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, Kh, pairs_i, pairs_j,
+             conv, ss_A, ss_B, ss_C, ss_in, ss_out, k3z, k3v, F)
+        for d in range(6):
+            k3x[d] = vs[d]
+            xs[d] = x[d] + dt * k3x[d]
+            tmp[d] = v[d] + dt * k3v[d]
+        for d in range(6):
+            vs[d] = tmp[d]
+        for s in range(n_s):
+            zs[s] = z[s] + dt * k3z[s]
+        # stage 4 (c = 1)
+        _rhs(2 * n + 2, xs, vs, zs, H1, 2, v, dt, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, Kh, pairs_i, pairs_j,
+             conv, ss_A, ss_B, ss_C, ss_in, ss_out, k4z, k4v, F)
+        for d in range(6):
+            k4x[d] = vs[d]
+        bad = False
+        for d in range(6):
+            x[d] += dt / 6.0 * (k1x[d] + 2 * k2x[d] + 2 * k3x[d] + k4x[d])
+            v[d] += dt / 6.0 * (k1v[d] + 2 * k2v[d] + 2 * k3v[d] + k4v[d])
+            if not (np.isfinite(x[d]) and np.isfinite(v[d])):
+                bad = True
+        for s in range(n_s):
+            z[s] += dt / 6.0 * (k1z[s] + 2 * k2z[s] + 2 * k3z[s] + k4z[s])
+        out_x[n + 1, :] = x
+        out_v[n + 1, :] = v
+        if bad:
+            return STATUS_NAN, n + 1
+        for d in range(3):
+            if abs(x[d]) > limit_trans or abs(x[d + 3]) > limit_rot:
+                return STATUS_RUNAWAY, n + 1
+        head = (head + 1) % nb
+        vbuf[head, :] = v
+        if count < nb:
+            count += 1
+    return STATUS_OK, n_steps

@@ -1,0 +1,114 @@
+"""Compile a vessel's database and radiation memory into the arrays of the RK4 Cummins kernel."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from boatland.integrate.cummins import STATUS_MESSAGES, run_cummins
+from boatland.model.hydrodb import HydroDB
+from boatland.model.radiation import RadiationMemory
+
+__all__ = ["MotionArrays", "compile_motion"]
+
+
+@dataclass(frozen=True, eq=False)
+class MotionArrays:
+    """Everything :func:`boatland.integrate.run_cummins` needs about the vessel (no time series)."""
+
+    Mt_inv: np.ndarray
+    C: np.ndarray
+    conv: bool
+    Kh: np.ndarray
+    pairs_i: np.ndarray
+    pairs_j: np.ndarray
+    n_hist: int
+    ss_A: np.ndarray
+    ss_B: np.ndarray
+    ss_C: np.ndarray
+    ss_in: np.ndarray
+    ss_out: np.ndarray
+
+    @classmethod
+    def without_memory(cls, Mt, C) -> "MotionArrays":
+        """A system with no radiation memory (K ≡ 0): (M + A∞) x'' + C x = F — for analytic checks."""
+        e = np.zeros(0, dtype=np.int64)
+        return cls(np.linalg.inv(np.asarray(Mt, dtype=float)), np.asarray(C, dtype=float).copy(), True,
+                   np.zeros((0, 1)), e, e, 0, np.zeros((0, 0)), np.zeros(0), np.zeros(0), e, e)
+
+    def run(self, dt: float, n_steps: int, *, F_ext=None, thrust=None, r_p=(0.0, 0.0, 0.0), x0=None, v0=None,
+            Bv=None, Bq=None, limit_trans: float = 1e3, limit_rot: float = 1.0):
+        """Integrate; returns ``(t, x, v, status, message)`` with x, v of shape (n_steps + 1, 6).
+
+        ``F_ext`` (2 n_steps + 1, 6) and ``thrust`` (2 n_steps + 1,) are sampled at half steps.
+        """
+        m = 2 * n_steps + 1
+        F_ext = np.zeros((m, 6)) if F_ext is None else np.ascontiguousarray(F_ext, dtype=float)
+        thrust = np.zeros(m) if thrust is None else np.ascontiguousarray(thrust, dtype=float)
+        if F_ext.shape != (m, 6) or thrust.shape != (m,):
+            raise ValueError(f"F_ext must be ({m}, 6) and thrust ({m},) for {n_steps} steps (half steps)")
+        vec = lambda a: np.zeros(6) if a is None else np.asarray(a, dtype=float).reshape(6)  # noqa: E731
+        out_x = np.zeros((n_steps + 1, 6))
+        out_v = np.zeros((n_steps + 1, 6))
+        status, last = run_cummins(float(dt), int(n_steps), self.Mt_inv, self.C, vec(Bv), vec(Bq), F_ext, thrust,
+                                   np.asarray(r_p, dtype=float), vec(x0), vec(v0), self.conv, self.Kh,
+                                   self.pairs_i, self.pairs_j, self.n_hist, self.ss_A, self.ss_B, self.ss_C,
+                                   self.ss_in, self.ss_out, float(limit_trans), float(limit_rot), out_x, out_v)
+        t = np.arange(n_steps + 1) * dt
+        return t[:last + 1], out_x[:last + 1], out_v[:last + 1], int(status), STATUS_MESSAGES[int(status)]
+
+
+def _resample_irf(memory: RadiationMemory, pairs, h: float, t_max: float) -> np.ndarray:
+    """K of the given pairs at t = k h, k = 0 … t_max/h (linear interpolation of the stored IRF)."""
+    irf = memory.irf
+    t = np.arange(int(round(t_max / h)) + 1) * h
+    return np.array([np.interp(t, irf.t, irf.K[i, j], right=0.0) for i, j in pairs]).reshape(len(pairs), t.size)
+
+
+def compile_motion(db: HydroDB, memory: RadiationMemory, dt: float, *, method: str = "convolution",
+                   memory_length: float | None = None) -> MotionArrays:
+    """Kernel arrays for ``db`` with radiation ``memory`` at time step ``dt``.
+
+    Parameters
+    ----------
+    db : HydroDB
+        Needs ``M`` (mass matrix) — a database without it cannot be integrated.
+    memory : RadiationMemory
+        IRFs (and the state-space fit for ``method="state_space"``).
+    dt : float
+        Integration step [s]; K is resampled every Δt/2 for the stage-consistent convolution.
+    method : {"convolution", "state_space"}
+    memory_length : float, optional
+        T_K [s] of the convolution; default the IRF's own length.
+    """
+    if db.M is None:
+        raise ValueError("the database has no mass matrix: give mass, centre of gravity and inertia")
+    Mt = db.M + memory.irf.A_inf
+    pairs = [(i, j) for i in range(6) for j in range(6) if memory.irf.significant[i, j]]
+    T_K = float(memory.irf.t[-1]) if memory_length is None else float(memory_length)
+    empty_i = np.zeros(0, dtype=np.int64)
+    if method == "convolution":
+        Kh = _resample_irf(memory, pairs, dt / 2, T_K)
+        pi = np.array([p[0] for p in pairs], dtype=np.int64)
+        pj = np.array([p[1] for p in pairs], dtype=np.int64)
+        return MotionArrays(np.linalg.inv(Mt), db.C.copy(), True, Kh, pi, pj, int(round(T_K / dt)),
+                            np.zeros((0, 0)), np.zeros(0), np.zeros(0), empty_i, empty_i)
+    if method != "state_space":
+        raise ValueError(f"method must be 'convolution' or 'state_space', got {method!r}")
+    ss = memory.state_space
+    if ss is None:
+        raise ValueError("no state-space fit in this radiation memory")
+    blocks = [(i, j, f) for (i, j), f in sorted(ss.pairs.items()) if f.order > 0]
+    n = sum(f.order for _, _, f in blocks)
+    A = np.zeros((n, n)); B = np.zeros(n); Cr = np.zeros(n)
+    s_in = np.zeros(n, dtype=np.int64); s_out = np.zeros(n, dtype=np.int64)
+    k = 0
+    for i, j, f in blocks:
+        o = f.order
+        A[k:k + o, k:k + o], B[k:k + o], Cr[k:k + o] = f.A, f.B, f.C
+        s_in[k:k + o], s_out[k:k + o] = j, i
+        k += o
+    return MotionArrays(np.linalg.inv(Mt), db.C.copy(), False, np.zeros((0, 1)), empty_i, empty_i, 0,
+                        A, B, Cr, s_in, s_out)
+
