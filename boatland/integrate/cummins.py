@@ -32,7 +32,10 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-__all__ = ["rotation_matrix", "run_cummins", "STATUS_OK", "STATUS_NAN", "STATUS_RUNAWAY", "STATUS_MESSAGES"]
+from boatland.contact.fender import OPEN, STICK, contact_forces, decide_modes, tangential_position
+from boatland.rigid import rotation_matrix
+
+__all__ = ["run_cummins", "STATUS_OK", "STATUS_NAN", "STATUS_RUNAWAY", "STATUS_MESSAGES"]
 
 STATUS_OK = 0
 STATUS_NAN = 1
@@ -42,25 +45,6 @@ STATUS_MESSAGES = {
     STATUS_NAN: "the state became NaN or infinite",
     STATUS_RUNAWAY: "runaway motion (a displacement or rotation beyond the limit)",
 }
-
-
-@njit(cache=True)
-def rotation_matrix(phi, theta, psi):
-    """Body → global rotation for roll φ, pitch θ, yaw ψ (z-y-x convention, R = Rz(ψ) Ry(θ) Rx(φ))."""
-    cf, sf = np.cos(phi), np.sin(phi)
-    ct, st = np.cos(theta), np.sin(theta)
-    cp, sp = np.cos(psi), np.sin(psi)
-    R = np.empty((3, 3))
-    R[0, 0] = cp * ct
-    R[0, 1] = cp * st * sf - sp * cf
-    R[0, 2] = cp * st * cf + sp * sf
-    R[1, 0] = sp * ct
-    R[1, 1] = sp * st * sf + cp * cf
-    R[1, 2] = sp * st * cf - cp * sf
-    R[2, 0] = -st
-    R[2, 1] = ct * sf
-    R[2, 2] = ct * cf
-    return R
 
 
 @njit(cache=True)
@@ -104,9 +88,9 @@ def _history(vbuf, head, count, Kh, pairs_i, pairs_j, c2, dt, out):
 
 
 @njit(cache=True)
-def _rhs(t_idx, x, v, z, mu_hist, c2, v_n, dt, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p,
-         Kh, pairs_i, pairs_j, conv, ss_A, ss_B, ss_C, ss_in, ss_out, dz, acc, F):
-    """Accelerations ``acc`` and state-space derivative ``dz`` at one stage."""
+def _forces(t_idx, x, v, z, mu_hist, c2, v_n, dt, C, Bv, Bq, F_ext, thrust, r_p,
+            Kh, pairs_i, pairs_j, conv, ss_A, ss_B, ss_C, ss_in, ss_out, dz, F):
+    """All forces but the contacts, into ``F``; the state-space derivative into ``dz``."""
     for d in range(6):
         F[d] = F_ext[t_idx, d] - Bv[d] * v[d] - Bq[d] * abs(v[d]) * v[d]
         for e in range(6):
@@ -129,17 +113,32 @@ def _rhs(t_idx, x, v, z, mu_hist, c2, v_n, dt, Mt_inv, C, Bv, Bq, F_ext, thrust,
                 acc_z += ss_A[s, r] * z[r]
             dz[s] = acc_z
             F[ss_out[s]] -= ss_C[s] * z[s]
-    for d in range(6):
-        a = 0.0
-        for e in range(6):
-            a += Mt_inv[d, e] * F[e]
-        acc[d] = a
+
+
+@njit(cache=True)
+def _stage(t_idx, x, v, z, mu_hist, c2, v_n, dt, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p,
+           Kh, pairs_i, pairs_j, conv, ss_A, ss_B, ss_C, ss_in, ss_out, ct, cs, dz, acc, F, f_t, f_n):
+    """Accelerations ``acc`` and state-space derivative ``dz`` at one RK4 stage (contacts included)."""
+    _forces(t_idx, x, v, z, mu_hist, c2, v_n, dt, C, Bv, Bq, F_ext, thrust, r_p,
+            Kh, pairs_i, pairs_j, conv, ss_A, ss_B, ss_C, ss_in, ss_out, dz, F)
+    P, S, N, TH, CF, DF, MU, sideways = ct
+    mode, fdir, anchor, anchored = cs
+    if P.shape[0] == 0:
+        for d in range(6):
+            a = 0.0
+            for e in range(6):
+                a += Mt_inv[d, e] * F[e]
+            acc[d] = a
+    else:
+        contact_forces(x, v, dt, P, S, N, TH, CF, DF, MU, sideways, mode, fdir, anchor, anchored,
+                       Mt_inv, F, acc, f_t, f_n)
 
 
 @njit(cache=True)
 def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
                 conv, Kh, pairs_i, pairs_j, n_hist, ss_A, ss_B, ss_C, ss_in, ss_out,
-                limit_trans, limit_rot, out_x, out_v):
+                ct, v_tol, limit_trans, limit_rot, out_x, out_v, out_mode, out_fn, out_ft, out_need,
+                out_avail, out_tpos):
     """Integrate the Cummins equation with classic RK4; returns ``(status, last_step)``.
 
     Parameters
@@ -147,7 +146,7 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
     dt : float
         Time step [s].
     n_steps : int
-        Number of steps; ``out_x``, ``out_v`` have ``n_steps + 1`` rows.
+        Number of steps; outputs have ``n_steps + 1`` rows.
     Mt_inv : (6, 6)
         (M + A∞)⁻¹.
     C : (6, 6)
@@ -165,10 +164,20 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
         (``pairs_i``, ``pairs_j``) over ``n_hist`` past steps. False: state space with the block
         system ``ss_A`` (ns, ns), ``ss_B`` (ns,), ``ss_C`` (ns,), input DOF ``ss_in`` (ns,),
         output DOF ``ss_out`` (ns,).
+    ct : tuple
+        Contacts ``(P, S, N, TH, CF, DF, MU, sideways)`` as in
+        :func:`boatland.contact.fender.contact_forces` (Nc = 0 for none).
+    v_tol : float
+        Speed below which a contact's sliding direction is not defined [m/s].
     limit_trans, limit_rot : float
         Runaway limits [m], [rad].
     out_x, out_v : (n_steps + 1, 6)
-        Filled with the trajectory.
+        Trajectory.
+    out_mode, out_fn, out_need, out_avail : (n_steps + 1, Nc)
+        Per step start: contact mode (0 open, 1 stick, 2 slip), normal force, stick force needed,
+        friction available μ(|u|) f_n.
+    out_ft, out_tpos : (n_steps + 1, Nc, 2)
+        Tangential (vertical, horizontal) friction force and fender-point position.
 
     Returns
     -------
@@ -177,6 +186,17 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
     last : int
         Last step written.
     """
+    P, S, N, TH, CF, DF, MU, sideways = ct
+    nc = P.shape[0]
+    mode = np.zeros(nc, dtype=np.int64)
+    fdir = np.zeros((nc, 2))
+    anchor = np.zeros((nc, 2))
+    anchored = np.zeros(nc, dtype=np.bool_)
+    cs = (mode, fdir, anchor, anchored)
+    f_t = np.zeros((nc, 2))
+    f_n = np.zeros(nc)
+    need = np.zeros(nc)
+    avail = np.zeros(nc)
     n_s = ss_A.shape[0]
     x = x0.copy()
     v = v0.copy()
@@ -189,54 +209,68 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
     H0 = np.zeros(6)
     Hh = np.zeros(6)
     H1 = np.zeros(6)
-    tmp = np.zeros(6)
     F = np.zeros(6)
     k1x, k2x, k3x, k4x = np.empty(6), np.empty(6), np.empty(6), np.empty(6)
     k1v, k2v, k3v, k4v = np.empty(6), np.empty(6), np.empty(6), np.empty(6)
     k1z, k2z, k3z, k4z = np.empty(n_s), np.empty(n_s), np.empty(n_s), np.empty(n_s)
     xs, vs, zs = np.empty(6), np.empty(6), np.empty(n_s)
-    out_x[0, :] = x
-    out_v[0, :] = v
-    for n in range(n_steps):
+    dz0 = np.empty(n_s)
+    for n in range(n_steps + 1):
         if conv:
-            # H0 is the full integral at t_n without the K(0) v_n end term (added as "current" below)
+            # H0 is the whole integral at t_n (the current interval of stage 1 is empty)
             _history(vbuf, head, count, Kh, pairs_i, pairs_j, 0, dt, H0)
+        if nc > 0:
+            _forces(2 * n, x, v, z, H0, 0, v, dt, C, Bv, Bq, F_ext, thrust, r_p, Kh, pairs_i, pairs_j,
+                    conv, ss_A, ss_B, ss_C, ss_in, ss_out, dz0, F)
+            decide_modes(x, v, dt, P, S, N, TH, CF, DF, MU, sideways, mode, fdir, anchor, anchored,
+                         Mt_inv, F, need, avail, v_tol)
+        # stage 1 (c = 0) — also the step-start record
+        _stage(2 * n, x, v, z, H0, 0, v, dt, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, Kh, pairs_i, pairs_j,
+               conv, ss_A, ss_B, ss_C, ss_in, ss_out, ct, cs, k1z, k1v, F, f_t, f_n)
+        out_x[n, :] = x
+        out_v[n, :] = v
+        for c in range(nc):
+            out_mode[n, c] = mode[c]
+            out_fn[n, c] = f_n[c]
+            out_ft[n, c, 0] = f_t[c, 0]
+            out_ft[n, c, 1] = f_t[c, 1]
+            out_need[n, c] = need[c]
+            out_avail[n, c] = avail[c]
+            out_tpos[n, c, 0], out_tpos[n, c, 1] = tangential_position(x, P[c], TH[c])
+        if n == n_steps:
+            break
+        if conv:
             _history(vbuf, head, count, Kh, pairs_i, pairs_j, 1, dt, Hh)
             _history(vbuf, head, count, Kh, pairs_i, pairs_j, 2, dt, H1)
-        # stage 1 (c = 0): μ(t_n) = H0 exactly (the current interval is empty)
-        _rhs(2 * n, x, v, z, H0, 0, v, dt, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, Kh, pairs_i, pairs_j,
-             conv, ss_A, ss_B, ss_C, ss_in, ss_out, k1z, k1v, F)
         for d in range(6):
             k1x[d] = v[d]
             xs[d] = x[d] + 0.5 * dt * k1x[d]
             vs[d] = v[d] + 0.5 * dt * k1v[d]
-        for s in range(n_s):
-            zs[s] = z[s] + 0.5 * dt * k1z[s]
+        for q in range(n_s):
+            zs[q] = z[q] + 0.5 * dt * k1z[q]
         # stage 2 (c = ½)
-        _rhs(2 * n + 1, xs, vs, zs, Hh, 1, v, dt, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, Kh, pairs_i, pairs_j,
-             conv, ss_A, ss_B, ss_C, ss_in, ss_out, k2z, k2v, F)
+        _stage(2 * n + 1, xs, vs, zs, Hh, 1, v, dt, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, Kh, pairs_i, pairs_j,
+               conv, ss_A, ss_B, ss_C, ss_in, ss_out, ct, cs, k2z, k2v, F, f_t, f_n)
         for d in range(6):
             k2x[d] = vs[d]
-            xs[d] = x[d] + 0.5 * dt * k2x[d]
-            tmp[d] = v[d] + 0.5 * dt * k2v[d]
         for d in range(6):
-            vs[d] = tmp[d]
-        for s in range(n_s):
-            zs[s] = z[s] + 0.5 * dt * k2z[s]
+            xs[d] = x[d] + 0.5 * dt * k2x[d]
+            vs[d] = v[d] + 0.5 * dt * k2v[d]
+        for q in range(n_s):
+            zs[q] = z[q] + 0.5 * dt * k2z[q]
         # stage 3 (c = ½)
-        _rhs(2 * n + 1, xs, vs, zs, Hh, 1, v, dt, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, Kh, pairs_i, pairs_j,
-             conv, ss_A, ss_B, ss_C, ss_in, ss_out, k3z, k3v, F)
+        _stage(2 * n + 1, xs, vs, zs, Hh, 1, v, dt, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, Kh, pairs_i, pairs_j,
+               conv, ss_A, ss_B, ss_C, ss_in, ss_out, ct, cs, k3z, k3v, F, f_t, f_n)
         for d in range(6):
             k3x[d] = vs[d]
-            xs[d] = x[d] + dt * k3x[d]
-            tmp[d] = v[d] + dt * k3v[d]
         for d in range(6):
-            vs[d] = tmp[d]
-        for s in range(n_s):
-            zs[s] = z[s] + dt * k3z[s]
+            xs[d] = x[d] + dt * k3x[d]
+            vs[d] = v[d] + dt * k3v[d]
+        for q in range(n_s):
+            zs[q] = z[q] + dt * k3z[q]
         # stage 4 (c = 1)
-        _rhs(2 * n + 2, xs, vs, zs, H1, 2, v, dt, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, Kh, pairs_i, pairs_j,
-             conv, ss_A, ss_B, ss_C, ss_in, ss_out, k4z, k4v, F)
+        _stage(2 * n + 2, xs, vs, zs, H1, 2, v, dt, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, Kh, pairs_i, pairs_j,
+               conv, ss_A, ss_B, ss_C, ss_in, ss_out, ct, cs, k4z, k4v, F, f_t, f_n)
         for d in range(6):
             k4x[d] = vs[d]
         bad = False
@@ -245,15 +279,24 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
             v[d] += dt / 6.0 * (k1v[d] + 2 * k2v[d] + 2 * k3v[d] + k4v[d])
             if not (np.isfinite(x[d]) and np.isfinite(v[d])):
                 bad = True
-        for s in range(n_s):
-            z[s] += dt / 6.0 * (k1z[s] + 2 * k2z[s] + 2 * k3z[s] + k4z[s])
-        out_x[n + 1, :] = x
-        out_v[n + 1, :] = v
+        for q in range(n_s):
+            z[q] += dt / 6.0 * (k1z[q] + 2 * k2z[q] + 2 * k3z[q] + k4z[q])
         if bad:
+            out_x[n + 1, :] = x
+            out_v[n + 1, :] = v
             return STATUS_NAN, n + 1
         for d in range(3):
             if abs(x[d]) > limit_trans or abs(x[d + 3]) > limit_rot:
+                out_x[n + 1, :] = x
+                out_v[n + 1, :] = v
                 return STATUS_RUNAWAY, n + 1
+        # a contact that stuck during this step is anchored where it came to rest
+        for c in range(nc):
+            if mode[c] == STICK and not anchored[c]:
+                anchor[c, 0], anchor[c, 1] = tangential_position(x, P[c], TH[c])
+                anchored[c] = True
+            elif mode[c] != STICK:
+                anchored[c] = False
         head = (head + 1) % nb
         vbuf[head, :] = v
         if count < nb:

@@ -38,10 +38,14 @@ class MotionArrays:
                    np.zeros((0, 1)), e, e, 0, np.zeros((0, 0)), np.zeros(0), np.zeros(0), e, e)
 
     def run(self, dt: float, n_steps: int, *, F_ext=None, thrust=None, r_p=(0.0, 0.0, 0.0), x0=None, v0=None,
-            Bv=None, Bq=None, limit_trans: float = 1e3, limit_rot: float = 1.0):
-        """Integrate; returns ``(t, x, v, status, message)`` with x, v of shape (n_steps + 1, 6).
+            Bv=None, Bq=None, contacts=None, v_tol: float = 1e-6, limit_trans: float = 1e3,
+            limit_rot: float = 1.0):
+        """Integrate; returns a dict of arrays (t, x, v and, with contacts, mode, fn, ft, needed,
+        available, tpos) plus ``status`` and ``message``.
 
-        ``F_ext`` (2 n_steps + 1, 6) and ``thrust`` (2 n_steps + 1,) are sampled at half steps.
+        ``F_ext`` (2 n_steps + 1, 6) and ``thrust`` (2 n_steps + 1,) are sampled at half steps;
+        ``contacts`` is the tuple ``(P, S, N, TH, CF, DF, MU, sideways)`` of
+        :func:`boatland.contact.fender.contact_forces` in the local frame.
         """
         m = 2 * n_steps + 1
         F_ext = np.zeros((m, 6)) if F_ext is None else np.ascontiguousarray(F_ext, dtype=float)
@@ -49,14 +53,26 @@ class MotionArrays:
         if F_ext.shape != (m, 6) or thrust.shape != (m,):
             raise ValueError(f"F_ext must be ({m}, 6) and thrust ({m},) for {n_steps} steps (half steps)")
         vec = lambda a: np.zeros(6) if a is None else np.asarray(a, dtype=float).reshape(6)  # noqa: E731
-        out_x = np.zeros((n_steps + 1, 6))
-        out_v = np.zeros((n_steps + 1, 6))
-        status, last = run_cummins(float(dt), int(n_steps), self.Mt_inv, self.C, vec(Bv), vec(Bq), F_ext, thrust,
-                                   np.asarray(r_p, dtype=float), vec(x0), vec(v0), self.conv, self.Kh,
-                                   self.pairs_i, self.pairs_j, self.n_hist, self.ss_A, self.ss_B, self.ss_C,
-                                   self.ss_in, self.ss_out, float(limit_trans), float(limit_rot), out_x, out_v)
-        t = np.arange(n_steps + 1) * dt
-        return t[:last + 1], out_x[:last + 1], out_v[:last + 1], int(status), STATUS_MESSAGES[int(status)]
+        if contacts is None:
+            e3 = np.zeros((0, 3))
+            contacts = (e3, e3, e3, e3, np.zeros(0), np.zeros(0), np.zeros((0, 5)), True)
+        nc = contacts[0].shape[0]
+        out = {
+            "x": np.zeros((n_steps + 1, 6)), "v": np.zeros((n_steps + 1, 6)),
+            "mode": np.zeros((n_steps + 1, nc), dtype=np.int64), "fn": np.zeros((n_steps + 1, nc)),
+            "ft": np.zeros((n_steps + 1, nc, 2)), "needed": np.zeros((n_steps + 1, nc)),
+            "available": np.zeros((n_steps + 1, nc)), "tpos": np.zeros((n_steps + 1, nc, 2)),
+        }
+        status, last = run_cummins(
+            float(dt), int(n_steps), self.Mt_inv, self.C, vec(Bv), vec(Bq), F_ext, thrust,
+            np.asarray(r_p, dtype=float), vec(x0), vec(v0), self.conv, self.Kh, self.pairs_i, self.pairs_j,
+            self.n_hist, self.ss_A, self.ss_B, self.ss_C, self.ss_in, self.ss_out, contacts, float(v_tol),
+            float(limit_trans), float(limit_rot), out["x"], out["v"], out["mode"], out["fn"], out["ft"],
+            out["needed"], out["available"], out["tpos"])
+        out = {k: a[:last + 1] for k, a in out.items()}
+        out["t"] = np.arange(last + 1) * dt
+        out["status"], out["message"] = int(status), STATUS_MESSAGES[int(status)]
+        return out
 
 
 def _resample_irf(memory: RadiationMemory, pairs, h: float, t_max: float) -> np.ndarray:

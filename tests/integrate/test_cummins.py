@@ -28,8 +28,9 @@ def exact_decay(t, x0):
 def decay_error(dt, T=10.0):
     n = int(round(T / dt))
     Bv = np.zeros(6); Bv[2] = B_LIN
-    t, x, _, status, _ = oscillator().run(dt, n, x0=[0, 0, 1.0, 0, 0, 0], Bv=Bv)
-    assert status == 0
+    r = oscillator().run(dt, n, x0=[0, 0, 1.0, 0, 0, 0], Bv=Bv)
+    t, x = r["t"], r["x"]
+    assert r["status"] == 0
     return np.max(np.abs(x[:, 2] - exact_decay(t, 1.0)))
 
 
@@ -47,8 +48,9 @@ def test_runaway_is_stopped_and_reported():
     arr = oscillator()
     C = arr.C.copy(); C[2, 2] = -K_SPRING  # negative restoring: exponential growth
     bad = MotionArrays.without_memory(np.eye(6) * M, C)
-    t, x, _, status, msg = bad.run(0.05, 4000, x0=[0, 0, 1.0, 0, 0, 0], limit_trans=50.0)
-    assert status == 2 and "runaway" in msg and abs(x[-1, 2]) > 50 and t[-1] < 200
+    r = bad.run(0.05, 4000, x0=[0, 0, 1.0, 0, 0, 0], limit_trans=50.0)
+    t, x = r["t"], r["x"]
+    assert r["status"] == 2 and "runaway" in r["message"] and abs(x[-1, 2]) > 50 and t[-1] < 200
 
 
 @pytest.fixture(scope="module")
@@ -75,8 +77,9 @@ def test_hemisphere_decay_period_is_the_database_natural_period(hemisphere):
     """
     db, mem = hemisphere
     arr = compile_motion(db, mem, 0.05)
-    t, x, _, status, _ = arr.run(0.05, 1200, x0=[0, 0, 1.0, 0, 0, 0])
-    assert status == 0
+    r = arr.run(0.05, 1200, x0=[0, 0, 1.0, 0, 0, 0])
+    t, x = r["t"], r["x"]
+    assert r["status"] == 0
     periods = np.diff(zero_up_crossings(t, x[:, 2]))
     assert periods.size >= 3
     assert np.mean(periods[:3]) == pytest.approx(db.natural_periods()["heave"], rel=0.01)
@@ -88,7 +91,7 @@ def test_convolution_and_state_space_agree(hemisphere):
     for method in ("convolution", "state_space"):
         arr = compile_motion(db, mem, 0.05, method=method)
         x0 = [0.2, 0, 1.0, 0, 0.02, 0]
-        runs[method] = arr.run(0.05, 800, x0=x0)[1]
+        runs[method] = arr.run(0.05, 800, x0=x0)["x"]
     a, b = runs["convolution"], runs["state_space"]
     for d in (0, 2, 4):
         rms = np.sqrt(np.mean((a[:, d] - b[:, d]) ** 2)) / np.sqrt(np.mean(a[:, d] ** 2))
@@ -102,7 +105,8 @@ def test_memory_is_stage_consistent(hemisphere):
     z = {}
     for dt in (0.1, 0.05, 0.025):
         arr = compile_motion(db, mem, dt)
-        t, x, _, _, _ = arr.run(dt, int(round(20 / dt)), x0=[0, 0, 1.0, 0, 0, 0])
+        r = arr.run(dt, int(round(20 / dt)), x0=[0, 0, 1.0, 0, 0, 0])
+        t, x = r["t"], r["x"]
         z[dt] = np.interp(np.arange(0, 20, 0.1), t, x[:, 2])
     d1 = np.max(np.abs(z[0.1] - z[0.05]))
     d2 = np.max(np.abs(z[0.05] - z[0.025]))
