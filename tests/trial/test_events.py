@@ -1,0 +1,42 @@
+"""Events and slip episodes from step records."""
+
+import numpy as np
+
+from boatland.trial.events import extract_events, first_exceedance, slip_episodes
+
+
+def records():
+    t = np.arange(10) * 0.1
+    mode = np.array([[0, 0], [1, 1], [1, 1], [2, 1], [2, 1], [1, 1], [1, 2], [1, 2], [1, 0], [1, 0]])
+    needed = np.zeros((10, 2)); available = np.ones((10, 2)) * 5.0
+    needed[3, 0] = 7.0
+    tpos = np.zeros((10, 2, 2))
+    tpos[3:5, 0, 0] = [0.02, -0.05]   # slides down 5 cm, then re-sticks at step 5
+    tpos[5:, 0, 0] = -0.05
+    tpos[6:8, 1, 1] = [0.1, 0.3]      # contact 1 slides sideways, then loses contact at step 8
+    return t, mode, needed, available, tpos
+
+
+def test_events_in_time_order_with_forces():
+    t, mode, needed, available, _ = records()
+    ev = extract_events(t, mode, needed, available)
+    kinds = [(e.step, e.contact, e.kind) for e in ev]
+    assert kinds == [(1, 0, "contact made"), (1, 1, "contact made"), (3, 0, "stick→slip"), (5, 0, "slip→stick"),
+                     (6, 1, "stick→slip"), (8, 1, "contact lost")]
+    assert ev[2].needed == 7.0 and ev[2].available == 5.0
+    assert "needed 0.007 kN > available 0.005 kN" in ev[2].text()
+
+
+def test_slip_distance_is_measured_from_where_it_stuck():
+    t, mode, _, _, tpos = records()
+    eps = slip_episodes(t, mode, tpos)
+    assert [(e.contact, e.t_start, e.ended_by) for e in eps] == [(0, 0.30000000000000004, "re-stick"),
+                                                                  (1, 0.6000000000000001, "contact lost")]
+    assert np.isclose(eps[0].distance, 0.05) and np.isclose(eps[0].vertical, -0.05)
+    assert np.isclose(eps[1].distance, 0.3) and np.isclose(eps[1].horizontal, 0.3)
+
+
+def test_first_exceedance():
+    t = np.arange(5.0)
+    assert first_exceedance(t, [0, 0.1, -0.3, 0.5, 0], 0.2) == 2.0
+    assert first_exceedance(t, np.zeros(5), 0.2) is None
