@@ -24,7 +24,9 @@ the accelerations and the stick forces :math:`f_c` solve
 :math:`\dot u'_c = -u_c/\Delta t - e_c/\Delta t^2 - (\omega\times(\omega\times r_c))_t`: the tangential
 velocity :math:`u_c` is driven to zero within the step (eq. 3.23) and a contact already stuck is
 pulled back to its anchor (:math:`e_c`, tangential offset from where it stuck) so that it cannot drift.
-It is solved by the Schur complement on :math:`(M+A_\infty)^{-1}`.
+It is solved by the Schur complement on :math:`(M+A_\infty)^{-1}`, in the least-squares
+minimum-norm sense: redundant constraints (two struts sharing a plane constrain the same sideways
+motion) make the split of that force statically indeterminate, and it is shared equally.
 
 The mode of each contact is decided once per step, at its start, and kept for the four RK4 stages:
 all contacts in touch are first assumed stuck; the contact whose needed force exceeds the available
@@ -195,7 +197,10 @@ def contact_forces(x, v, dt, P, S, N, TH, CF, DF, MU, sideways, mode, fdir, anch
     MG = Mt_inv @ Gm
     W = Gm.T @ MG
     rhs = target[:m] - Gm.T @ acc
-    f = np.linalg.solve(W, rhs)
+    # Least squares, minimum norm: two contacts on parallel struts give the same horizontal
+    # constraint twice (a rigid fender cannot slide sideways at one tube only), so W is singular and
+    # the split of that force between the tubes is statically indeterminate — shared equally.
+    f = np.linalg.lstsq(W, rhs, -1.0)[0]
     for d in range(6):
         s = 0.0
         for k in range(m):
@@ -244,24 +249,32 @@ def decide_modes(x, v, dt, P, S, N, TH, CF, DF, MU, sideways, mode, fdir, anchor
             Fc[d] = F[d]
         contact_forces(x, v, dt, P, S, N, TH, CF, DF, MU, sideways, mode, fdir, anchor, anchored,
                        Mt_inv, Fc, acc, f_t, f_n)
-        worst, excess = -1, 0.0
+        worst, excess, scale = -1, 0.0, 0.0
         for c in range(nc):
             if mode[c] != STICK:
                 continue
             mag = np.sqrt(f_t[c, 0] ** 2 + f_t[c, 1] ** 2)
             needed[c] = mag
+            scale = max(scale, mag)
             if mag - available[c] > excess:
                 worst, excess = c, mag - available[c]
         if worst < 0:
             break
-        c = worst
-        mag = np.sqrt(f_t[c, 0] ** 2 + f_t[c, 1] ** 2)
-        dv, dh = f_t[c, 0] / mag, f_t[c, 1] / mag
-        # friction opposes the sliding: never a component along the velocity
-        contact_kinematics(x, v, P[c], S[c], N[c], TH[c], r, u, cen)
-        uh = u[1] if sideways else 0.0
-        if speed[c] > v_tol and dv * u[0] + dh * uh > 0.0:
-            dv, dh = -u[0] / speed[c], -uh / speed[c]
-        mode[c] = SLIP
-        anchored[c] = False
-        fdir[c, 0], fdir[c, 1] = dv, dh
+        # release the contact that exceeds most — and any that exceed as much (symmetric contacts must
+        # not be split by their order in the list)
+        tie = 1e-9 * scale
+        for c in range(nc):
+            if mode[c] != STICK:
+                continue
+            mag = np.sqrt(f_t[c, 0] ** 2 + f_t[c, 1] ** 2)
+            if mag - available[c] < excess - tie:
+                continue
+            dv, dh = f_t[c, 0] / mag, f_t[c, 1] / mag
+            # friction opposes the sliding: never a component along the velocity
+            contact_kinematics(x, v, P[c], S[c], N[c], TH[c], r, u, cen)
+            uh = u[1] if sideways else 0.0
+            if speed[c] > v_tol and dv * u[0] + dh * uh > 0.0:
+                dv, dh = -u[0] / speed[c], -uh / speed[c]
+            mode[c] = SLIP
+            anchored[c] = False
+            fdir[c, 0], fdir[c, 1] = dv, dh

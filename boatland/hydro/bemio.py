@@ -66,6 +66,7 @@ def write_bemio(db: HydroDB, path: str | Path) -> Path:
     scalar = lambda v: np.array([[float(v)]])  # noqa: E731
     with atomic_path(path) as tmp:
         with h5py.File(tmp, "w") as f:
+            _store = _compressed_store(f)
             f["bem_data/code"] = np.bytes_(db.provenance.solver or "unknown")
             sp = f.create_group("simulation_parameters")
             sp["g"] = scalar(g)
@@ -86,13 +87,13 @@ def write_bemio(db: HydroDB, path: str | Path) -> Path:
             pr["dof_end"] = scalar(6)
             hc = f.create_group(_HC)
             hc["linear_restoring_stiffness"] = db.C / (rho * g)
-            hc["added_mass/all"] = db.A / rho
+            _store(hc, "added_mass/all", db.A / rho)
             if db.A_inf is not None:
                 hc["added_mass/inf_freq"] = db.A_inf / rho
-            hc["radiation_damping/all"] = db.B / (rho * w)
+            _store(hc, "radiation_damping/all", db.B / (rho * w))
             Xn = db.X / (rho * g)
             for key, val in (("re", Xn.real), ("im", Xn.imag), ("mag", np.abs(Xn)), ("phase", np.angle(Xn))):
-                hc[f"excitation/{key}"] = val
+                _store(hc, f"excitation/{key}", val)
             ex = f.create_group(_EXTRA)
             ex.attrs["name"] = db.name
             ex.attrs["boatland_version"] = __version__
@@ -106,14 +107,28 @@ def write_bemio(db: HydroDB, path: str | Path) -> Path:
             if db.A_0 is not None:
                 ex["A0"] = db.A_0
             exact = ex.create_group("exact")
-            exact["A"], exact["B"], exact["C"] = db.A, db.B, db.C
-            exact["X_re"], exact["X_im"] = db.X.real, db.X.imag
+            for key, val in (("A", db.A), ("B", db.B), ("C", db.C), ("X_re", db.X.real), ("X_im", db.X.imag)):
+                _store(exact, key, val)
             if db.A_inf is not None:
                 exact["A_inf"] = db.A_inf
             if db.mesh is not None:
-                ex["mesh/vertices"] = db.mesh.vertices
-                ex["mesh/faces"] = db.mesh.faces
+                _store(ex, "mesh/vertices", db.mesh.vertices)
+                _store(ex, "mesh/faces", db.mesh.faces)
     return path
+
+
+def _compressed_store(f):
+    """Writer of datasets: arrays of more than 4096 values get the standard gzip + shuffle filters
+    (read transparently by HDF5 in MATLAB, WEC-Sim, HydroChrono, BEMRosetta); small ones are plain."""
+
+    def store(group, name, value):
+        value = np.asarray(value)
+        if value.size > 4096:
+            group.create_dataset(name, data=value, compression="gzip", compression_opts=4, shuffle=True)
+        else:
+            group[name] = value
+
+    return store
 
 
 def read_bemio(path: str | Path) -> HydroDB:

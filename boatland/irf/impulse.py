@@ -364,7 +364,8 @@ def compute_irf(omega, A, B, A_inf=None, settings: IRFSettings | None = None) ->
         if sig[i, i] and truncation[i, i] > s.decay_tol:
             hint = ""
             if find_spikes(Bc[i, i]).size:
-                hint = "; B has irregular-frequency spikes that make K ring: rerun the BEM with a lid"
+                hint = ("; B has sharp peaks that make K ring (irregular frequencies: rerun the BEM with a lid; "
+                        "a catamaran's trapped waves: a longer memory)")
             raise IRFError(f"K[{pair_name(i, i)}] has not decayed by T_K = {t[-1]:g} s "
                            f"(max|K| over the last 10 % is {100 * truncation[i, i]:.0f} % of its peak): "
                            f"increase t_max (try {2 * t[-1]:g} s){hint}")

@@ -37,8 +37,12 @@ def test_coupled_pairs_follow_the_hull_symmetries(memory):
     assert not any(sig[i, j] or sig[j, i] for i, j in across)
 
 
-def test_round_trip_heave_and_pitch(memory):
+def test_round_trip_of_every_significant_pair(memory):
+    """Measured (5 rad/s band, 2026-11-21): B within 0.55–3.99 %, A within 0.40–4.92 % (relative L2 over
+    the band; worst: sway–roll and yaw, where the trapped-wave resonances between the demihulls make K
+    ring), K(T_K)/max K ≤ 1.6 %. Bounds are regression guards a little above those figures."""
     _, mem = memory
-    assert mem.irf.err_B[2, 2] < 0.01 and mem.irf.err_B[4, 4] < 0.01
-    assert mem.irf.err_A[2, 2] < 0.02 and mem.irf.err_A[4, 4] < 0.03
-    assert np.max(mem.irf.truncation[mem.irf.significant]) < 0.05
+    sig = mem.irf.significant
+    assert np.max(mem.irf.err_B[sig]) < 0.05
+    assert np.max(mem.irf.err_A[sig]) < 0.06
+    assert np.max(mem.irf.truncation[sig]) < 0.05

@@ -1,0 +1,284 @@
+r"""Physical checks of a scenario that need the vessel's hydrodynamic database.
+
+:func:`check_against` is run by whoever loads the database (the ``simulate`` service, the
+``boatland scenario check`` edge) before any computation. Problems carry the scenario's key paths:
+
+- the database has a mass matrix (the time domain needs M);
+- the fender is at the bow: every contact point within the front 20 % of the hull's length (from the
+  hull mesh), at most 10 % of the length ahead of the stem, and within the hull's beam;
+- dt resolves the fender: ``dt ≤ T_c / 20`` with T_c the period of the fastest contact mode
+  (:func:`contact_period`); the waves' band is checked when loading (no database needed);
+- the hull is clear of the monopile and the struts at t = 0; the water is deeper than the draft;
+- roll damping as a fraction of critical needs roll restoring.
+
+Warnings: wave energy above the database's highest frequency (its excitation would be taken as zero),
+a database computed for another water depth, a radiation memory longer than the database's
+frequency step resolves (π/Δω), no A∞ or no hull mesh.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.integrate import trapezoid
+
+from boatland.errors import BoatlandInputError
+from boatland.model.hydrodb import HydroDB
+from boatland.model.scenario_parts import rotation_2d
+from boatland.model.seastate import OUT_OF_BAND_WARN, MeasuredRecord, RegularWave
+from boatland.model.tomlspec import SpecError
+
+__all__ = ["ContactPeriod", "ScenarioCheck", "check_against", "contact_period", "roll_critical_damping"]
+
+#: The fender must sit in this front fraction of the hull's length ...
+BOW_FRACTION = 0.2
+#: ... and at most this fraction of the length ahead of the stem (fender depth, bow overhang).
+AHEAD_FRACTION = 0.1
+#: dt must resolve the fastest contact mode with this many steps.
+STEPS_PER_CONTACT_PERIOD = 20
+
+
+@dataclass(frozen=True)
+class ScenarioCheck:
+    """Result of :func:`check_against`.
+
+    Attributes
+    ----------
+    problems : tuple of (str, str)
+        ``(key_path, message)``: the scenario cannot run with this database.
+    warnings : tuple of (str, str)
+        ``(key_path, message)``: it can, but probably not as meant.
+    notes : tuple of str
+        What was derived (time step, contact period, start pose) for the user to see.
+    """
+
+    problems: tuple[tuple[str, str], ...]
+    warnings: tuple[tuple[str, str], ...]
+    notes: tuple[str, ...]
+
+    @property
+    def ok(self) -> bool:
+        return not self.problems
+
+    def raise_if_problems(self, source: str) -> None:
+        """Raise the problems as one :class:`SpecError` naming ``source`` (the scenario file)."""
+        if self.problems:
+            raise SpecError(source, list(self.problems))
+
+
+@dataclass(frozen=True)
+class ContactPeriod:
+    r"""The fender's contact dynamics on the vessel.
+
+    Attributes
+    ----------
+    period : float
+        :math:`T_c = 2\pi / \max|\lambda|` [s], λ the eigenvalues of the linear system
+        :math:`(M + A_\infty)\ddot x + D\dot x + K x = 0` with :math:`K = c_f \sum_i g_i g_i^\top`,
+        :math:`D = d_f \sum_i g_i g_i^\top`, :math:`g_i = (n_i, r_i \times n_i)` the generalized
+        direction of contact i (normal n_i in the body frame, point r_i): all contacts closed.
+    m_eff : tuple of float
+        Effective mass of the vessel at each contact point along its normal,
+        :math:`m_{eff} = 1 / (g^\top (M + A_\infty)^{-1} g)` [kg].
+    undamped : tuple of float
+        :math:`T_f = 2\pi\sqrt{m_{eff}/c_f}` of each contact alone [s].
+    """
+
+    period: float
+    m_eff: tuple[float, ...]
+    undamped: tuple[float, ...]
+
+
+def _mass(db: HydroDB) -> np.ndarray:
+    if db.M is None:
+        raise BoatlandInputError(f"database {db.name!r} has no mass matrix M: a time-domain run needs it")
+    A_inf = db.A_inf if db.A_inf is not None else db.A[:, :, -1]
+    return np.asarray(db.M, float) + np.asarray(A_inf, float)
+
+
+def contact_period(scenario, db: HydroDB) -> ContactPeriod:
+    """The fastest contact mode of ``scenario``'s fender on the vessel of ``db`` (:class:`ContactPeriod`)."""
+    f, land = scenario.fender, scenario.landing
+    Ma = _mass(db)
+    Rt = rotation_2d(scenario.vessel.heading_deg).T  # global → body
+    G = []
+    for r, strut in zip(f.points_array, land.struts):
+        n = np.array([*(Rt @ strut.normal), 0.0])
+        G.append(np.concatenate([n, np.cross(r, n)]))
+    G = np.array(G)
+    Minv = np.linalg.inv(Ma)
+    K = f.stiffness * G.T @ G
+    D = f.damping * G.T @ G
+    A = np.block([[np.zeros((6, 6)), np.eye(6)], [-Minv @ K, -Minv @ D]])
+    lam = float(np.max(np.abs(np.linalg.eigvals(A))))
+    m_eff = tuple(float(1.0 / (g @ Minv @ g)) for g in G)
+    undamped = tuple(2 * math.pi * math.sqrt(m / f.stiffness) for m in m_eff)
+    return ContactPeriod(period=2 * math.pi / lam, m_eff=m_eff, undamped=undamped)
+
+
+def roll_critical_damping(db: HydroDB) -> float:
+    r"""Critical roll damping :math:`2\sqrt{(M_{44} + A_{44}(\omega_{44}))\,C_{44}}` [N m s/rad] of ``db``.
+
+    ω_44 is the undamped roll natural frequency (:meth:`HydroDB.natural_periods`: A_44 taken at ω_44
+    by fixed-point iteration).
+    """
+    T = db.natural_periods(dofs=(3,)).get("roll") if db.M is not None else None
+    if T is None:
+        raise BoatlandInputError(f"database {db.name!r}: no roll natural period (mass matrix missing or C44 ≤ 0), "
+                                 "so vessel.damping.roll_critical_fraction cannot be turned into a damping")
+    w = 2 * math.pi / T
+    a_hi = db.A_inf[3, 3] if db.A_inf is not None else db.A[3, 3, -1]
+    A44 = float(np.interp(w, db.omega, db.A[3, 3], left=db.A[3, 3, 0], right=a_hi))
+    return 2.0 * math.sqrt((db.M[3, 3] + A44) * db.C[3, 3])
+
+
+def _variance_share_above(waves, omega_max: float) -> float:
+    if isinstance(waves, RegularWave):
+        return 1.0 if waves.omega > omega_max else 0.0
+    if isinstance(waves, MeasuredRecord):
+        c = waves.realise()
+        v = c.a ** 2
+        return float(v[c.omega > omega_max].sum() / max(v.sum(), 1e-300))
+    wp = min(p.omega_p for p in waves.parts)
+    w = np.linspace(1e-3 * wp, max(40.0 * wp, 2 * omega_max), 20001)
+    S = waves.spectrum(w)
+    total = trapezoid(S, w)
+    return float(trapezoid(np.where(w > omega_max, S, 0.0), w) / total) if total > 0 else 0.0
+
+
+def check_against(scenario, db: HydroDB) -> ScenarioCheck:
+    """Check ``scenario`` (a :class:`~boatland.model.scenario.Scenario`) against its database ``db``."""
+    problems: list[tuple[str, str]] = []
+    warns: list[tuple[str, str]] = []
+    notes: list[str] = []
+    v = scenario.vessel
+    if db.M is None:
+        problems.append(("vessel.database", f"the database {db.name!r} has no mass matrix M; a time-domain run "
+                                            "needs mass, centre of gravity and inertia"))
+    if db.A_inf is None:
+        warns.append(("vessel.database", "the database has no infinite-frequency added mass A∞; it is estimated "
+                                         "from Ogilvie's relation (sensitive to the top of the band)"))
+    mesh = db.mesh.vertices if db.mesh is not None else None
+    if mesh is None:
+        warns.append(("vessel.database", "the database has no hull mesh: fender position and monopile clearance "
+                                         "are not checked against the hull"))
+    if scenario.landing is not None and (v.position_derived or v.heading_derived):
+        pos_how = " (derived: fender just touching)" if v.position_derived else ""
+        head_how = " (derived: bow on the landing)" if v.heading_derived else ""
+        notes.append(f"start pose: position ({v.position[0]:.3f}, {v.position[1]:.3f}) m{pos_how}, "
+                     f"heading {v.heading_deg:g}°{head_how}")
+    if scenario.fender is not None and mesh is not None:
+        problems += _fender_on_bow(scenario.fender, mesh, db.name)
+    dt = scenario.time_step(db if db.M is not None else None)
+    rule = "" if scenario.simulation.dt is not None else " (default rule: min(0.05 s, Tp/100, T_contact/20))"
+    notes.append(f"time step dt = {dt:.5g} s{rule}, {scenario.n_steps(db if db.M is not None else None)} steps")
+    if scenario.fender is not None and scenario.landing is not None and db.M is not None:
+        cp = contact_period(scenario, db)
+        notes.append(f"fender contact: fastest mode period {cp.period:.4g} s; effective mass along the normal "
+                     + ", ".join(f"{m:.4g} kg" for m in cp.m_eff) + "; T_f = 2π√(m_eff/c_f) = "
+                     + ", ".join(f"{t:.4g} s" for t in cp.undamped))
+        limit = cp.period / STEPS_PER_CONTACT_PERIOD
+        if dt > limit * (1 + 1e-9):
+            problems.append(("simulation.dt", f"{dt:g} s is too large for the fender: its fastest contact mode has "
+                                              f"period {cp.period:.3g} s (c_f = {scenario.fender.stiffness:g} N/m, "
+                                              f"d_f = {scenario.fender.damping:g} N s/m, effective mass "
+                                              f"{min(cp.m_eff):.4g} kg); use dt ≤ {limit:.3g} s (period / "
+                                              f"{STEPS_PER_CONTACT_PERIOD})"))
+    if scenario.sea is not None:
+        problems_w, warns_w = _waves_in_band(scenario, db)
+        problems += problems_w
+        warns += warns_w
+    if scenario.landing is not None and mesh is not None:
+        problems += _clearance(scenario, db.mesh)
+    depth = scenario.sea.water_depth if scenario.sea is not None and scenario.sea.water_depth is not None \
+        else db.water_depth
+    if mesh is not None and depth <= -float(mesh[:, 2].min()):
+        problems.append(("sea.water_depth", f"{depth:g} m is not deeper than the vessel's draft "
+                                            f"{-float(mesh[:, 2].min()):g} m"))
+    dw = float(np.min(np.diff(db.omega)))
+    if scenario.radiation.memory > math.pi / dw * (1 + 1e-9):
+        warns.append(("radiation.memory", f"{scenario.radiation.memory:g} s is longer than the database's frequency "
+                                          f"step resolves (π/Δω = {math.pi / dw:.3g} s): K(t) beyond that is not "
+                                          "reliable"))
+    if v.roll_critical_fraction > 0:
+        try:
+            notes.append(f"roll damping: {v.roll_critical_fraction:g} of critical = "
+                         f"{v.roll_critical_fraction * roll_critical_damping(db):.4g} N m s/rad added to B44")
+        except BoatlandInputError as exc:
+            problems.append(("vessel.damping.roll_critical_fraction", str(exc)))
+    return ScenarioCheck(problems=tuple(problems), warnings=tuple(warns), notes=tuple(notes))
+
+
+def _fender_on_bow(fender, mesh: np.ndarray, name: str) -> list[tuple[str, str]]:
+    out = []
+    x0, x1 = float(mesh[:, 0].min()), float(mesh[:, 0].max())
+    y0, y1 = float(mesh[:, 1].min()), float(mesh[:, 1].max())
+    L = x1 - x0
+    front = x1 - BOW_FRACTION * L
+    for i, (x, y, _) in enumerate(fender.points):
+        key = f"fender.points[{i}]"
+        if x < front:
+            out.append((key, f"x = {x:g} m is not at the bow: the hull of {name!r} spans x = {x0:g} … {x1:g} m, "
+                             f"its front {100 * BOW_FRACTION:g} % starts at x = {front:g} m"))
+        elif x > x1 + AHEAD_FRACTION * L:
+            out.append((key, f"x = {x:g} m is {x - x1:.3g} m ahead of the stem of {name!r} (x = {x1:g} m): more than "
+                             f"{100 * AHEAD_FRACTION:g} % of the hull length"))
+        if not y0 <= y <= y1:
+            out.append((key, f"y = {y:g} m is outside the hull's beam (y = {y0:g} … {y1:g} m)"))
+    return out
+
+
+def _waves_in_band(scenario, db: HydroDB):
+    problems, warns = [], []
+    waves = scenario.wave_model(db)
+    w_max = float(db.omega[-1])
+    share = _variance_share_above(waves, w_max)
+    if isinstance(waves, RegularWave):
+        if share > 0:
+            problems.append(("sea.T", f"the wave (ω = {waves.omega:.3g} rad/s) is above the database's highest "
+                                      f"frequency {w_max:g} rad/s: its excitation would be taken as zero"))
+    elif share > OUT_OF_BAND_WARN:
+        warns.append(("sea", f"{100 * share:.1f} % of the wave variance lies above the database's highest frequency "
+                             f"{w_max:g} rad/s; its excitation is taken as zero"))
+    given = scenario.sea.water_depth
+    if given is not None and not (given == db.water_depth or
+                                  (math.isfinite(given) and abs(given / db.water_depth - 1) < 0.01)):
+        warns.append(("sea.water_depth", f"{given:g} m, but the database {db.name!r} was computed for "
+                                         f"{db.water_depth:g} m"))
+    return problems, warns
+
+
+def _footprint_distance(c: np.ndarray, xy: np.ndarray, faces: np.ndarray) -> float:
+    """Horizontal distance from point ``c`` to the hull's footprint (panels projected on the xy plane); 0 inside."""
+    a = xy[faces]                      # (Np, 4, 2)
+    b = np.roll(a, -1, axis=1)
+    e = b - a
+    t = np.clip(np.einsum("pkj,pkj->pk", c - a, e) / np.maximum(np.einsum("pkj,pkj->pk", e, e), 1e-300), 0, 1)
+    d_edges = float(np.min(np.linalg.norm(a + t[..., None] * e - c, axis=-1)))
+    cross = e[..., 0] * (c[1] - a[..., 1]) - e[..., 1] * (c[0] - a[..., 0])   # (Np, 4)
+    area = 0.5 * np.abs(np.sum(a[..., 0] * b[..., 1] - b[..., 0] * a[..., 1], axis=1))
+    inside = (area > 1e-12) & (np.all(cross >= 0, axis=1) | np.all(cross <= 0, axis=1))
+    return 0.0 if np.any(inside) else d_edges
+
+
+def _clearance(scenario, mesh) -> list[tuple[str, str]]:
+    """The wetted hull (its footprint) must be clear of the monopile and the struts at t = 0."""
+    out = []
+    x, y, psi = scenario.start_pose()
+    q0 = scenario.initial.displacement
+    p = np.array([x, y]) + rotation_2d(math.degrees(psi)) @ q0[:2]
+    xy = mesh.vertices[:, :2] @ rotation_2d(math.degrees(psi + q0[5])).T + p
+    land = scenario.landing
+    key = "vessel.position" if not scenario.vessel.position_derived else "landing"
+    R_pile = land.monopile_diameter / 2
+    d = _footprint_distance(np.asarray(land.monopile_position, float), xy, mesh.faces)
+    if d < R_pile:
+        out.append((key, f"the hull reaches {R_pile - d:.3g} m into the monopile at t = 0"))
+    for i, st in enumerate(land.struts):
+        ds = _footprint_distance(np.asarray(st.position, float), xy, mesh.faces)
+        if ds < st.diameter / 2:
+            out.append((key, f"the hull overlaps struts[{i}] at t = 0 (by {st.diameter / 2 - ds:.3g} m): the "
+                             "fender points must be ahead of the hull"))
+    return out

@@ -1,0 +1,159 @@
+"""The result of one landing trial: labelled time series, events, slip episodes, incidents, summary."""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from boatland import __version__
+from boatland.atomic import atomic_path
+from boatland.conventions import DOF_NAMES, DOF_UNITS
+from boatland.model.scenario_parts import Incidents
+from boatland.trial.events import Event, SlipEpisode, first_exceedance
+
+__all__ = ["Result"]
+
+
+@dataclass(frozen=True, eq=False)
+class Result:
+    """One trial. Arrays are indexed by step (``t``), contacts by their order in the scenario.
+
+    Attributes
+    ----------
+    t : (n,)
+        Time [s].
+    x, v : (n, 6)
+        Motions and velocities of the reference point (surge, sway, heave [m]; roll, pitch, yaw [rad]).
+    F_exc : (n, 6)
+        Wave excitation force.
+    thrust : (n,)
+        Push along the vessel's x axis [N].
+    mode : (n, Nc) int
+        0 open, 1 stick, 2 slip (at each step start).
+    fn : (n, Nc)
+        Normal force [N]; ``ft`` (n, Nc, 2) friction (vertical, horizontal) [N]; ``needed`` the stick
+        force that would hold the contact, ``available`` μ(|u|) f_n [N]; ``tpos`` (n, Nc, 2) the
+        fender point in the contact plane [m].
+    events, episodes : list
+        :class:`~boatland.trial.events.Event` and :class:`~boatland.trial.events.SlipEpisode`.
+    status, message : int, str
+        0 = completed; otherwise why the integration stopped (NaN, runaway) — the arrays then end there.
+    provenance : dict
+        boatland version, scenario name and hash, seed, dt, radiation method.
+    incidents : Incidents
+        Thresholds of the incident definitions (slip distances [m], roll limits [deg]); loss of
+        contact is always reported.
+    """
+
+    t: np.ndarray
+    x: np.ndarray
+    v: np.ndarray
+    F_exc: np.ndarray
+    thrust: np.ndarray
+    mode: np.ndarray
+    fn: np.ndarray
+    ft: np.ndarray
+    needed: np.ndarray
+    available: np.ndarray
+    tpos: np.ndarray
+    events: list[Event] = field(default_factory=list)
+    episodes: list[SlipEpisode] = field(default_factory=list)
+    status: int = 0
+    message: str = "completed"
+    provenance: dict = field(default_factory=dict)
+    incidents: Incidents | None = None
+
+    @property
+    def completed(self) -> bool:
+        return self.status == 0
+
+    def slip_events(self) -> list[Event]:
+        return [e for e in self.events if e.kind == "stick→slip"]
+
+    def incident_times(self) -> dict[str, float | None]:
+        """First time of each incident definition (None: did not happen)."""
+        out: dict[str, float | None] = {}
+        slip_limits = self.incidents.slip_distance if self.incidents is not None else (0.1,)
+        roll_limits = self.incidents.roll_limit_deg if self.incidents is not None else ()
+        for limit in slip_limits:
+            first = None
+            for ep in self.episodes:  # the distance passes the threshold during the episode: find when
+                if ep.distance <= limit:
+                    continue
+                k0 = int(np.searchsorted(self.t, ep.t_start))
+                k1 = int(np.searchsorted(self.t, ep.t_end)) + 1
+                origin = self.tpos[max(k0 - 1, 0), ep.contact]
+                d = np.hypot(*(self.tpos[k0:k1, ep.contact] - origin).T)
+                tt = first_exceedance(self.t[k0:k1], d, limit)
+                if tt is not None and (first is None or tt < first):
+                    first = tt
+            out[f"slip > {limit:g} m"] = first
+        for limit in roll_limits:
+            out[f"roll > {limit:g}°"] = first_exceedance(self.t, self.x[:, 3], np.radians(limit))
+        if self.mode.shape[1]:
+            lost = [e.t for e in self.events if e.kind == "contact lost"]
+            out["contact loss"] = min(lost) if lost else None
+        return out
+
+    def summary(self) -> dict:
+        """Figures a user reads first (JSON-able)."""
+        slips = self.slip_events()
+        touching = self.mode > 0
+        fn = np.where(touching, self.fn, np.nan)
+        return {
+            "status": self.message,
+            "duration": float(self.t[-1]),
+            "slip_events": len(slips),
+            "time_to_first_slip": slips[0].t if slips else None,
+            "max_slip_distance": max((e.distance for e in self.episodes), default=0.0),
+            "max_normal_force": None if not touching.any() else float(np.nanmax(fn)),
+            "min_normal_force_in_contact": None if not touching.any() else float(np.nanmin(fn)),
+            "contact_fraction": float(touching.all(axis=1).mean()) if self.mode.shape[1] else 0.0,
+            "max_motions": {f"{n} [{'deg' if u == 'rad' else u}]": float(np.degrees(a) if u == "rad" else a)
+                            for n, u, a in zip(DOF_NAMES, DOF_UNITS, np.max(np.abs(self.x), axis=0))},
+            "incidents": self.incident_times(),
+            "provenance": self.provenance,
+        }
+
+    def summary_text(self) -> str:
+        s = self.summary()
+        lines = [f"{self.provenance.get('scenario', 'trial')}: {s['status']} after {s['duration']:.1f} s"]
+        if self.mode.shape[1]:
+            first = s["time_to_first_slip"]
+            lines += [
+                f"  slip events          {s['slip_events']}" + (f" (first at t = {first:.2f} s)" if first is not None else ""),
+                f"  max slip distance    {s['max_slip_distance']:.3f} m",
+                f"  normal force         max {s['max_normal_force'] / 1e3:.3g} kN, min in contact "
+                f"{s['min_normal_force_in_contact'] / 1e3:.3g} kN" if s["max_normal_force"] is not None
+                else "  normal force         never in contact",
+                f"  all contacts touching {100 * s['contact_fraction']:.1f} % of the time",
+            ]
+        lines.append("  max motions          " + ", ".join(f"{k} {v:.3g}" for k, v in s["max_motions"].items()))
+        for name, t in s["incidents"].items():
+            lines.append(f"  incident {name:14s}" + ("no" if t is None else f"at t = {t:.2f} s"))
+        for e in self.events[:12]:
+            lines.append(f"  event: {e.text()}")
+        if len(self.events) > 12:
+            lines.append(f"  … {len(self.events) - 12} more events (see --json or the output file)")
+        return "\n".join(lines)
+
+    def to_hdf5(self, path: str | Path) -> Path:
+        """Write the time series, events and summary to HDF5, atomically (nothing half-written)."""
+        import h5py
+
+        path = Path(path)
+        with atomic_path(path) as tmp:
+            with h5py.File(tmp, "w") as f:
+                f.attrs["boatland_version"] = __version__
+                f.attrs["summary"] = json.dumps(self.summary())
+                for name in ("t", "x", "v", "F_exc", "thrust", "mode", "fn", "ft", "needed", "available", "tpos"):
+                    f.create_dataset(name, data=getattr(self, name), compression="gzip", shuffle=True)
+                f["x"].attrs["columns"] = ",".join(DOF_NAMES)
+                ev = np.array([(e.t, e.contact, e.kind.encode(), e.needed, e.available) for e in self.events],
+                              dtype=[("t", "f8"), ("contact", "i4"), ("kind", "S16"), ("needed", "f8"),
+                                     ("available", "f8")])
+                f["events"] = ev
+        return path

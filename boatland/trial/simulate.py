@@ -1,0 +1,166 @@
+"""One landing trial: scenario + hydrodynamic database → integrated motions, contact forces, events.
+
+The service wires the validated :class:`~boatland.model.scenario.Scenario` to the kernels: radiation
+memory (:mod:`boatland.irf` through :func:`boatland.model.radiation.radiation_memory`), the wave
+excitation on the RK4 half-step grid (:mod:`boatland.waves`), the thrust ramp, the fender contacts in
+the vessel's local frame, and the RK4 Cummins integrator with stick–slip contact
+(:func:`boatland.integrate.run_cummins`). It loads nothing from disk: the caller passes the database
+(``boatland.scenario_check.load_checked`` does both for files).
+"""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+
+from boatland import __version__
+from boatland.irf.impulse import IRFSettings
+from boatland.model.motion import compile_motion
+from boatland.model.radiation import RadiationMemory, default_dt, radiation_memory
+from boatland.model.scenario import Scenario
+from boatland.model.hydrodb import HydroDB
+from boatland.trial.events import extract_events, slip_episodes
+from boatland.trial.result import Result
+
+__all__ = ["simulate", "prepare_memory", "contact_arrays", "thrust_series", "BlowUpError"]
+
+#: Runaway limits: no CTV landing survives these (linear hydrodynamics is meaningless beyond them).
+LIMIT_TRANS, LIMIT_ROT = 50.0, np.radians(60.0)
+
+
+class BlowUpError(RuntimeError):
+    """The integration stopped (NaN or runaway): the message says when, the state, the likely cause."""
+
+    def __init__(self, result: Result, cause: str):
+        self.result = result
+        k = len(result.t) - 1
+        x = result.x[k]
+        state = (f"surge {x[0]:.3g} m, sway {x[1]:.3g} m, heave {x[2]:.3g} m, roll {np.degrees(x[3]):.3g}°, "
+                 f"pitch {np.degrees(x[4]):.3g}°, yaw {np.degrees(x[5]):.3g}°")
+        super().__init__(f"integration stopped at t = {result.t[k]:.2f} s: {result.message} ({state}); "
+                         f"likely cause: {cause}")
+
+
+def prepare_memory(scenario: Scenario, db: HydroDB) -> RadiationMemory:
+    """Radiation memory for the scenario: IRFs over the scenario's memory length (and the state-space
+    fit when the scenario asks for it)."""
+    rad = scenario.radiation
+    settings = IRFSettings(t_max=rad.memory, dt=default_dt(db.omega[-1]), tail=rad.tail, taper=rad.taper)
+    return radiation_memory(db, settings, fit=rad.method == "state_space")
+
+
+def thrust_series(scenario: Scenario, dt: float, n_steps: int) -> np.ndarray:
+    """Push [N] at the half steps, ramped in with a half-cosine over ``thrust.ramp``."""
+    t = np.arange(2 * n_steps + 1) * dt / 2
+    if scenario.thrust is None:
+        return np.zeros_like(t)
+    T, ramp = scenario.thrust.force, scenario.thrust.ramp
+    r = np.ones_like(t) if ramp <= 0 else np.where(t < ramp, 0.5 * (1 - np.cos(np.pi * t / ramp)), 1.0)
+    return T * r
+
+
+def contact_arrays(scenario: Scenario, db: HydroDB):
+    """The kernel's contact tuple ``(P, S, N, TH, CF, DF, MU, sideways)`` in the local frame (origin at
+    the reference point's start position, axes along the vessel at rest)."""
+    e3 = np.zeros((0, 3))
+    if scenario.fender is None or scenario.landing is None:
+        return (e3, e3, e3, e3, np.zeros(0), np.zeros(0), np.zeros((0, 5)), True)
+    x0, y0, psi = scenario.start_pose()
+    c, s = np.cos(psi), np.sin(psi)
+    to_local = np.array([[c, s], [-s, c]])  # global → local rotation (by −ψ)
+    fender = scenario.fender
+    P = fender.points_array
+    nc = P.shape[0]
+    n_loc = scenario.landing.normals @ to_local.T
+    s_loc = (scenario.landing.plane_points - [x0, y0]) @ to_local.T
+    N = np.column_stack([n_loc, np.zeros(nc)])
+    S = np.column_stack([s_loc, np.zeros(nc)])
+    TH = np.cross([0.0, 0.0, 1.0], N)
+    CF = np.full(nc, fender.stiffness)
+    DF = np.full(nc, fender.damping)
+    MU = np.tile([fender.mu_s, fender.mu_k, fender.k_v, fender.v_ref, fender.delta], (nc, 1))
+    return (np.ascontiguousarray(P, dtype=float), S, N, TH, CF, DF, MU, bool(fender.sideways))
+
+
+def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None = None) -> Result:
+    r"""Run one landing trial.
+
+    Equation of motion (DESIGN.md §1; Cummins 1962, seed 000 eq. 3.40; contact: seed 001 §2.5, §3.4):
+
+    .. math::
+        (M + A_\infty)\ddot x + \int_0^t K(t-\tau)\dot x\,d\tau + B_v\dot x + B_q|\dot x|\dot x + C x
+            = F_{exc}(t) + F_T(t) + \sum_c F_c
+
+    Parameters
+    ----------
+    scenario : Scenario
+        Validated scenario (its database checks are the caller's: ``scenario.check_against(db)``).
+    db : HydroDB
+        The vessel's database (with a mass matrix).
+    memory : RadiationMemory, optional
+        Reuse IRFs / state-space fit across trials of a campaign (must match the scenario's settings).
+
+    Returns
+    -------
+    Result
+        Labelled time series, events, slip episodes, summary, provenance.
+
+    Raises
+    ------
+    BlowUpError
+        NaN or runaway motion: the partial result is attached, nothing pretends success.
+    """
+    wall0 = time.perf_counter()
+    dt = scenario.time_step(db)
+    n = scenario.n_steps(db)
+    memory = memory or prepare_memory(scenario, db)
+    arrays = compile_motion(db, memory, dt, method=scenario.radiation.method, memory_length=scenario.radiation.memory)
+    x0g, y0g, psi = scenario.start_pose()
+    waves = scenario.wave_model(db)
+    if waves is None:
+        F = np.zeros((2 * n + 1, 6))
+    else:
+        F = waves.excitation(db, seed=scenario.simulation.seed, dt=dt, n_steps=n, x0=x0g, y0=y0g,
+                             heading_deg=float(np.degrees(psi)), ramp_time=scenario.simulation.start_ramp)
+    thrust = thrust_series(scenario, dt, n)
+    Bv, Bq = scenario.additional_damping(db)
+    contacts = contact_arrays(scenario, db)
+    r_p = scenario.thrust.position if scenario.thrust is not None else (0.0, 0.0, 0.0)
+    out = arrays.run(dt, n, F_ext=F, thrust=thrust, r_p=r_p, x0=scenario.initial.displacement,
+                     v0=scenario.initial.velocity, Bv=np.diag(Bv), Bq=np.diag(Bq), contacts=contacts,
+                     limit_trans=LIMIT_TRANS, limit_rot=LIMIT_ROT)
+    t = out["t"]
+    k = len(t)
+    events = extract_events(t, out["mode"], out["needed"], out["available"])
+    episodes = slip_episodes(t, out["mode"], out["tpos"])
+    provenance = {
+        "boatland": __version__, "scenario": scenario.name, "scenario_sha256": scenario.digest(),
+        "database": db.name, "seed": scenario.simulation.seed, "dt": dt, "steps": n,
+        "radiation": scenario.radiation.method, "memory": scenario.radiation.memory,
+        "wall_time": time.perf_counter() - wall0,
+    }
+    result = Result(t=t, x=out["x"], v=out["v"], F_exc=F[0:2 * k:2], thrust=thrust[0:2 * k:2],
+                    mode=out["mode"], fn=out["fn"], ft=out["ft"], needed=out["needed"],
+                    available=out["available"], tpos=out["tpos"], events=events, episodes=episodes,
+                    status=out["status"], message=out["message"], provenance=provenance,
+                    incidents=scenario.incidents)
+    if out["status"] != 0:
+        raise BlowUpError(result, _likely_cause(scenario, db, dt, result))
+    return result
+
+
+def _likely_cause(scenario, db, dt, result) -> str:
+    x = result.x[-1]
+    if scenario.fender is not None:
+        from boatland.model.scenario_checks import contact_period
+
+        Tc = contact_period(scenario, db).period
+        if dt > Tc / 10:
+            return (f"dt = {dt:g} s is large for the fender contact period {Tc:.3g} s (use dt ≤ {Tc / 20:.3g} s "
+                    "or a softer fender)")
+    if abs(x[3]) > LIMIT_ROT or abs(x[4]) > LIMIT_ROT:
+        return "capsizing rotation: check the restoring matrix (C44, C55) and the centre of gravity"
+    if np.any(np.diag(db.C)[2:5] <= 0):
+        return "no hydrostatic restoring in heave/roll/pitch (C_ii ≤ 0) in the database"
+    return "an unstable radiation memory or excitation far above the database band; try radiation.method = 'convolution' and a smaller dt"
