@@ -45,11 +45,36 @@ def _parser() -> argparse.ArgumentParser:
         prog="boatland",
         description="Crew transfer vessel on a boat landing: will the fender hold, and if it slips, "
                     "when and how far?",
-        epilog="Start with 'boatland hydro info' (the built-in CTV), or 'boatland <command> --help'.",
+        epilog="Start with 'boatland run' (the default CTV landing trial), or 'boatland <command> --help'.",
     )
     p.add_argument("--version", action="version", version=f"boatland {__version__}")
     p.add_argument("-v", "--verbose", action="store_true", help="say more about what is being done")
     sub = p.add_subparsers(title="commands", metavar="COMMAND")
+
+    run = sub.add_parser(
+        "run", help="run one landing trial from a scenario file (default: the built-in CTV trial)",
+        description="Run one landing trial: the vessel pushing its bow fender against the boat landing in "
+                    "the scenario's sea, RK4 Cummins integration with stick–slip fender contact. Prints a "
+                    "summary: slip events, time to first slip, slip distance, normal forces, motions, "
+                    "incidents. Without a file: scenarios/ctv_landing.toml (24 m CTV, JONSWAP Hs 1.5 m, "
+                    "80 kN).")
+    run.add_argument("scenario", nargs="?", type=Path, help="scenario file (TOML); see 'boatland scenario schema'")
+    run.add_argument("--json", action="store_true", help="print the summary as JSON")
+    run.add_argument("-o", "--output", type=Path, help="write the time series, events and summary (HDF5)")
+    run.add_argument("--duration", type=float, help="override simulation.duration [s]")
+    run.add_argument("--seed", type=int, help="override simulation.seed")
+    run.set_defaults(func=_cmd_run)
+
+    scen = sub.add_parser("scenario", help="scenario files: validate, JSON Schema",
+                          description="Scenario files (TOML): check one without running it, or print the JSON "
+                                      "Schema for editors.")
+    ssub = scen.add_subparsers(title="scenario commands", metavar="SCENARIO_COMMAND")
+    scen.set_defaults(func=lambda a: scen.print_help())
+    chk = ssub.add_parser("check", help="validate a scenario file and its physics against the database")
+    chk.add_argument("file", type=Path)
+    chk.set_defaults(func=_cmd_scenario_check)
+    sch = ssub.add_parser("schema", help="print the JSON Schema of scenario files")
+    sch.set_defaults(func=lambda a: print(__import__("boatland.scenario_check", fromlist=["x"]).schema_text()))
 
     hydro = sub.add_parser("hydro", help="hydrodynamic databases: import BEM output, summarise, build",
                            description="Hydrodynamic databases (BEMIO HDF5): import, summarise, build.")
@@ -217,6 +242,53 @@ def _cmd_irf(args) -> int:
     if not args.json:
         print(f"stored IRFs{'' if args.no_fit else ' and state-space fit'} in {target}")
     return 0
+
+
+def _cmd_run(args) -> int:
+    import warnings
+
+    from boatland.scenario_check import default_scenario_path, load_checked
+    from boatland.trial.simulate import BlowUpError, simulate
+
+    path = args.scenario or default_scenario_path()
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        scenario, db, _ = load_checked(path)
+        changes = {}
+        if args.duration is not None:
+            changes["simulation.duration"] = args.duration
+        if args.seed is not None:
+            changes["simulation.seed"] = args.seed
+        if changes:
+            scenario = scenario.replace(changes)
+        if not args.json:
+            print(f"running {scenario.name}: {scenario.simulation.duration:g} s at dt = {scenario.time_step(db):g} s "
+                  f"({scenario.n_steps(db)} steps), {db.name}, radiation {scenario.radiation.method}", file=sys.stderr)
+        try:
+            result = simulate(scenario, db)
+        except BlowUpError as exc:
+            print(f"boatland: error: {path}: {exc}", file=sys.stderr)
+            return 3
+    for w in caught:
+        if not args.json:
+            print(f"warning: {w.message}", file=sys.stderr)
+    if args.output:
+        result.to_hdf5(args.output)
+    if args.json:
+        print(json.dumps(result.summary(), indent=2, default=float))
+    else:
+        print(result.summary_text())
+        if args.output:
+            print(f"wrote {args.output}")
+    return 0
+
+
+def _cmd_scenario_check(args) -> int:
+    from boatland.scenario_check import check_file
+
+    report = check_file(args.file)
+    print(report.text)
+    return report.exit_status
 
 
 def _cmd_list(args) -> int:

@@ -81,3 +81,31 @@ def test_irf_bad_settings_exit_2(refdata, tmp_path):
     run("hydro", "import", refdata / "bemio_sphere" / "sphere.h5", "-o", db)
     r = run("irf", db, "--t-max", "2")
     assert r.returncode == 2 and "increase t_max" in r.stderr and "Traceback" not in r.stderr
+
+
+SCENARIOS = sorted((REPO_ROOT := __import__("pathlib").Path(__file__).resolve().parents[1] / "scenarios").glob("*.toml"))
+
+
+@pytest.mark.parametrize("scenario", SCENARIOS, ids=lambda p: p.stem)
+def test_every_shipped_scenario_runs_shortened(scenario, tmp_path):
+    """Each scenario file checks clean and runs 30 s (after its thrust ramp) through the real CLI."""
+    r = run("scenario", "check", scenario)
+    assert r.returncode == 0, r.stdout + r.stderr
+    out = tmp_path / "run.h5"
+    r = run("run", scenario, "--duration", "40", "--json", "-o", out)
+    assert r.returncode == 0, r.stderr
+    s = json.loads(r.stdout)
+    assert s["status"] == "completed" and s["duration"] == pytest.approx(40.0, abs=0.1)
+    import h5py
+
+    with h5py.File(out) as f:
+        assert f["x"].shape[1] == 6 and f["t"][-1] == pytest.approx(40.0, abs=0.1)
+        assert json.loads(f.attrs["summary"])["slip_events"] == s["slip_events"]
+
+
+def test_bad_scenario_is_one_message_exit_2(tmp_path):
+    bad = tmp_path / "bad.toml"
+    bad.write_text('[simulation]\nduration = -5\n[sea]\nkind = "jonswap"\nHs = -1\nTp = 7\n[vesel]\n')
+    r = run("run", bad)
+    assert r.returncode == 2 and "Traceback" not in r.stderr
+    assert "simulation.duration" in r.stderr and "sea.Hs" in r.stderr and "did you mean" in r.stderr

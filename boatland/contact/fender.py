@@ -193,10 +193,10 @@ def contact_forces(x, v, dt, P, S, N, TH, CF, DF, MU, sideways, mode, fdir, anch
         acc[d] = a
     if m == 0:
         return
-    Gm = G[:, :m]
+    Gm = np.ascontiguousarray(G[:, :m])
     MG = Mt_inv @ Gm
-    W = Gm.T @ MG
-    rhs = target[:m] - Gm.T @ acc
+    W = np.ascontiguousarray(Gm.T) @ MG
+    rhs = target[:m] - np.ascontiguousarray(Gm.T) @ acc
     # Least squares, minimum norm: two contacts on parallel struts give the same horizontal
     # constraint twice (a rigid fender cannot slide sideways at one tube only), so W is singular and
     # the split of that force between the tubes is statically indeterminate — shared equally.

@@ -23,7 +23,7 @@ from boatland.model.hydrodb import HydroDB
 from boatland.trial.events import extract_events, slip_episodes
 from boatland.trial.result import Result
 
-__all__ = ["simulate", "prepare_memory", "contact_arrays", "thrust_series", "BlowUpError"]
+__all__ = ["simulate", "prepare_memory", "contact_arrays", "thrust_series", "wave_ramp", "wave_start", "BlowUpError"]
 
 #: Runaway limits: no CTV landing survives these (linear hydrodynamics is meaningless beyond them).
 LIMIT_TRANS, LIMIT_ROT = 50.0, np.radians(60.0)
@@ -58,6 +58,22 @@ def thrust_series(scenario: Scenario, dt: float, n_steps: int) -> np.ndarray:
     T, ramp = scenario.thrust.force, scenario.thrust.ramp
     r = np.ones_like(t) if ramp <= 0 else np.where(t < ramp, 0.5 * (1 - np.cos(np.pi * t / ramp)), 1.0)
     return T * r
+
+
+def wave_start(scenario: Scenario) -> float:
+    """Time [s] at which the waves begin to ramp in: once the thrust is fully on (the tank tests of
+    seed 001 §4.3.3 pushed the fender on before the waves arrived), else at once."""
+    return scenario.thrust.ramp if (scenario.thrust is not None and scenario.fender is not None) else 0.0
+
+
+def wave_ramp(scenario: Scenario, dt: float, n_steps: int) -> np.ndarray:
+    """Factor on the wave excitation at the half steps: 0 until :func:`wave_start`, then a half-cosine
+    over ``simulation.start_ramp``, then 1."""
+    t = np.arange(2 * n_steps + 1) * dt / 2 - wave_start(scenario)
+    T = scenario.simulation.start_ramp
+    if T <= 0:
+        return (t >= 0).astype(float)
+    return np.where(t <= 0, 0.0, np.where(t < T, 0.5 * (1 - np.cos(np.pi * np.clip(t, 0, T) / T)), 1.0))
 
 
 def contact_arrays(scenario: Scenario, db: HydroDB):
@@ -122,7 +138,8 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
         F = np.zeros((2 * n + 1, 6))
     else:
         F = waves.excitation(db, seed=scenario.simulation.seed, dt=dt, n_steps=n, x0=x0g, y0=y0g,
-                             heading_deg=float(np.degrees(psi)), ramp_time=scenario.simulation.start_ramp)
+                             heading_deg=float(np.degrees(psi)), ramp_time=0.0)
+        F *= wave_ramp(scenario, dt, n)[:, None]
     thrust = thrust_series(scenario, dt, n)
     Bv, Bq = scenario.additional_damping(db)
     contacts = contact_arrays(scenario, db)
@@ -138,7 +155,7 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
         "boatland": __version__, "scenario": scenario.name, "scenario_sha256": scenario.digest(),
         "database": db.name, "seed": scenario.simulation.seed, "dt": dt, "steps": n,
         "radiation": scenario.radiation.method, "memory": scenario.radiation.memory,
-        "wall_time": time.perf_counter() - wall0,
+        "waves_from": wave_start(scenario), "wall_time": time.perf_counter() - wall0,
     }
     result = Result(t=t, x=out["x"], v=out["v"], F_exc=F[0:2 * k:2], thrust=thrust[0:2 * k:2],
                     mode=out["mode"], fn=out["fn"], ft=out["ft"], needed=out["needed"],
