@@ -97,6 +97,36 @@ def tangential_position(x, p, th):
 
 
 @njit(cache=True)
+def _cholesky_solve(W, b, m):
+    """Solve W f = b for a small symmetric positive-definite W (m × m) in place (no LAPACK call:
+    the per-stage contact systems are 1–4 unknowns, where the call overhead dominates)."""
+    L = W
+    for j in range(m):
+        d = L[j, j]
+        for k in range(j):
+            d -= L[j, k] * L[j, k]
+        d = np.sqrt(d)
+        L[j, j] = d
+        for i in range(j + 1, m):
+            s = L[i, j]
+            for k in range(j):
+                s -= L[i, k] * L[j, k]
+            L[i, j] = s / d
+    y = np.empty(m)
+    for i in range(m):
+        s = b[i]
+        for k in range(i):
+            s -= L[i, k] * y[k]
+        y[i] = s / L[i, i]
+    for i in range(m - 1, -1, -1):
+        s = y[i]
+        for k in range(i + 1, m):
+            s -= L[k, i] * y[k]
+        y[i] = s / L[i, i]
+    return y
+
+
+@njit(cache=True)
 def _gen_force(r, d0, d1, d2, f, out):
     """Add the generalised force of a force f·d at lever r to out (6)."""
     fx, fy, fz = f * d0, f * d1, f * d2
@@ -197,10 +227,22 @@ def contact_forces(x, v, dt, P, S, N, TH, CF, DF, MU, sideways, mode, fdir, anch
     MG = Mt_inv @ Gm
     W = np.ascontiguousarray(Gm.T) @ MG
     rhs = target[:m] - np.ascontiguousarray(Gm.T) @ acc
-    # Least squares, minimum norm: two contacts on parallel struts give the same horizontal
-    # constraint twice (a rigid fender cannot slide sideways at one tube only), so W is singular and
-    # the split of that force between the tubes is statically indeterminate — shared equally.
-    f = np.linalg.lstsq(W, rhs, -1.0)[0]
+    # Minimum-norm solution: two contacts on parallel struts give the same horizontal constraint
+    # twice (a rigid fender cannot slide sideways at one tube only), so W is singular and the split of
+    # that force between the tubes is statically indeterminate — shared equally. The constraints are
+    # consistent, so the Tikhonov solve (W + εI) f = rhs with ε = 1e-10 max W_kk gives the
+    # pseudo-inverse solution to ~1e-6 relative in the redundant direction (and is 20× cheaper than
+    # an SVD least-squares solve per stage).
+    eps = 0.0
+    for k in range(m):
+        eps = max(eps, W[k, k])
+        for q in range(k):  # symmetric by construction; average out round-off before Cholesky
+            w = 0.5 * (W[k, q] + W[q, k])
+            W[k, q] = w
+            W[q, k] = w
+    for k in range(m):
+        W[k, k] += 1e-10 * eps
+    f = _cholesky_solve(W, rhs, m)
     for d in range(6):
         s = 0.0
         for k in range(m):

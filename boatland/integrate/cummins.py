@@ -64,32 +64,53 @@ def _thrust(x, T, r_p, out):
 
 
 @njit(cache=True)
-def _history(vbuf, head, count, Kh, pairs_i, pairs_j, c2, dt, out):
-    """H_c = Σ_m w_m Δt K((n−m+c)Δt) v_m over the stored velocities (ring buffer, newest at ``head``).
+def _history(vbuf, head, count, Kh, pairs_i, pairs_j, dt, H0, Hh, H1):
+    """H_c = Σ_m w_m Δt K((n−m+c)Δt) v_m for c = 0, ½, 1 in one pass over the stored velocities.
 
-    ``c2`` = 2c (0, 1 or 2) indexes the half-step IRF samples ``Kh`` (npairs, nK2).
+    ``vbuf`` (2 nb, 6) is a mirrored ring buffer (each velocity stored at ``head`` and ``head + nb``),
+    so the last ``count`` velocities are contiguous: lag ℓ sits at ``head + nb − ℓ``. ``Kh`` (npairs,
+    nK2) holds K at the half steps k Δt / 2.
     """
     for d in range(6):
-        out[d] = 0.0
+        H0[d] = 0.0
+        Hh[d] = 0.0
+        H1[d] = 0.0
     if count < 2:  # [0, t_n] is empty at the first step
         return
-    nb = vbuf.shape[0]
+    nb = vbuf.shape[0] // 2
     nK2 = Kh.shape[1]
+    top = head + nb
     for p in range(pairs_i.shape[0]):
         i, j = pairs_i[p], pairs_j[p]
-        s = 0.0
-        for lag in range(count):
-            k = 2 * lag + c2
-            if k >= nK2:
-                break
-            w = 0.5 if (lag == 0 or lag == count - 1) else 1.0
-            s += w * Kh[p, k] * vbuf[(head - lag) % nb, j]
-        out[i] += s * dt
+        n_lag = min(count, (nK2 - 1) // 2)  # lags whose K(lag + 1) sample exists
+        s0 = 0.0
+        sh = 0.0
+        s1 = 0.0
+        for lag in range(n_lag):
+            vv = vbuf[top - lag, j]
+            k = 2 * lag
+            s0 += Kh[p, k] * vv
+            sh += Kh[p, k + 1] * vv
+            s1 += Kh[p, k + 2] * vv
+        # trapezoid: half weight at both ends of [0, t_n]
+        v_new = vbuf[top, j]
+        s0 -= 0.5 * Kh[p, 0] * v_new
+        sh -= 0.5 * Kh[p, 1] * v_new
+        s1 -= 0.5 * Kh[p, 2] * v_new
+        if n_lag == count:
+            v_old = vbuf[top - count + 1, j]
+            k = 2 * (count - 1)
+            s0 -= 0.5 * Kh[p, k] * v_old
+            sh -= 0.5 * Kh[p, k + 1] * v_old
+            s1 -= 0.5 * Kh[p, k + 2] * v_old
+        H0[i] += s0 * dt
+        Hh[i] += sh * dt
+        H1[i] += s1 * dt
 
 
 @njit(cache=True)
 def _forces(t_idx, x, v, z, mu_hist, c2, v_n, dt, C, Bv, Bq, F_ext, thrust, r_p,
-            Kh, pairs_i, pairs_j, conv, ss_A, ss_B, ss_C, ss_in, ss_out, dz, F):
+            Kh, pairs_i, pairs_j, conv, ss_A, ss_B, ss_C, ss_in, ss_out, ss_pair, dz, F):
     """All forces but the contacts, into ``F``; the state-space derivative into ``dz``."""
     for d in range(6):
         F[d] = F_ext[t_idx, d] - Bv[d] * v[d] - Bq[d] * abs(v[d]) * v[d]
@@ -106,21 +127,23 @@ def _forces(t_idx, x, v, z, mu_hist, c2, v_n, dt, C, Bv, Bq, F_ext, thrust, r_p,
         for d in range(6):
             F[d] -= mu_hist[d]
     else:
+        # block-diagonal modal realisation: each state couples to itself and at most one partner
         n_s = z.shape[0]
         for s in range(n_s):
-            acc_z = ss_B[s] * v[ss_in[s]]
-            for r in range(n_s):
-                acc_z += ss_A[s, r] * z[r]
+            acc_z = ss_A[s, 0] * z[s] + ss_B[s] * v[ss_in[s]]
+            q = ss_pair[s]
+            if q >= 0:
+                acc_z += ss_A[s, 1] * z[q]
             dz[s] = acc_z
             F[ss_out[s]] -= ss_C[s] * z[s]
 
 
 @njit(cache=True)
 def _stage(t_idx, x, v, z, mu_hist, c2, v_n, dt, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p,
-           Kh, pairs_i, pairs_j, conv, ss_A, ss_B, ss_C, ss_in, ss_out, ct, cs, dz, acc, F, f_t, f_n):
+           Kh, pairs_i, pairs_j, conv, ss_A, ss_B, ss_C, ss_in, ss_out, ss_pair, ct, cs, dz, acc, F, f_t, f_n):
     """Accelerations ``acc`` and state-space derivative ``dz`` at one RK4 stage (contacts included)."""
     _forces(t_idx, x, v, z, mu_hist, c2, v_n, dt, C, Bv, Bq, F_ext, thrust, r_p,
-            Kh, pairs_i, pairs_j, conv, ss_A, ss_B, ss_C, ss_in, ss_out, dz, F)
+            Kh, pairs_i, pairs_j, conv, ss_A, ss_B, ss_C, ss_in, ss_out, ss_pair, dz, F)
     P, S, N, TH, CF, DF, MU, sideways = ct
     mode, fdir, anchor, anchored = cs
     if P.shape[0] == 0:
@@ -136,7 +159,7 @@ def _stage(t_idx, x, v, z, mu_hist, c2, v_n, dt, Mt_inv, C, Bv, Bq, F_ext, thrus
 
 @njit(cache=True)
 def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
-                conv, Kh, pairs_i, pairs_j, n_hist, ss_A, ss_B, ss_C, ss_in, ss_out,
+                conv, Kh, pairs_i, pairs_j, n_hist, ss_A, ss_B, ss_C, ss_in, ss_out, ss_pair,
                 ct, v_tol, limit_trans, limit_rot, out_x, out_v, out_mode, out_fn, out_ft, out_need,
                 out_avail, out_tpos):
     """Integrate the Cummins equation with classic RK4; returns ``(status, last_step)``.
@@ -161,9 +184,10 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
         Initial displacement and velocity.
     conv : bool
         True: convolution memory with ``Kh`` (npairs, nK2) = K(k Δt/2) of the pairs
-        (``pairs_i``, ``pairs_j``) over ``n_hist`` past steps. False: state space with the block
-        system ``ss_A`` (ns, ns), ``ss_B`` (ns,), ``ss_C`` (ns,), input DOF ``ss_in`` (ns,),
-        output DOF ``ss_out`` (ns,).
+        (``pairs_i``, ``pairs_j``) over ``n_hist`` past steps. False: state space in modal
+        (block-diagonal) form: ``ss_A`` (ns, 2) the diagonal entry and the entry coupling each state
+        to its 2×2-block partner ``ss_pair`` (ns,) (−1 for a real pole), ``ss_B`` (ns,), ``ss_C``
+        (ns,), input DOF ``ss_in`` (ns,), output DOF ``ss_out`` (ns,).
     ct : tuple
         Contacts ``(P, S, N, TH, CF, DF, MU, sideways)`` as in
         :func:`boatland.contact.fender.contact_forces` (Nc = 0 for none).
@@ -197,15 +221,16 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
     f_n = np.zeros(nc)
     need = np.zeros(nc)
     avail = np.zeros(nc)
-    n_s = ss_A.shape[0]
+    n_s = ss_B.shape[0]
     x = x0.copy()
     v = v0.copy()
     z = np.zeros(n_s)
     nb = max(n_hist + 1, 1)
-    vbuf = np.zeros((nb, 6))
+    vbuf = np.zeros((2 * nb, 6))  # mirrored ring buffer (see _history)
     head = 0
     count = 1
     vbuf[0, :] = v
+    vbuf[nb, :] = v
     H0 = np.zeros(6)
     Hh = np.zeros(6)
     H1 = np.zeros(6)
@@ -218,15 +243,15 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
     for n in range(n_steps + 1):
         if conv:
             # H0 is the whole integral at t_n (the current interval of stage 1 is empty)
-            _history(vbuf, head, count, Kh, pairs_i, pairs_j, 0, dt, H0)
+            _history(vbuf, head, count, Kh, pairs_i, pairs_j, dt, H0, Hh, H1)
         if nc > 0:
             _forces(2 * n, x, v, z, H0, 0, v, dt, C, Bv, Bq, F_ext, thrust, r_p, Kh, pairs_i, pairs_j,
-                    conv, ss_A, ss_B, ss_C, ss_in, ss_out, dz0, F)
+                    conv, ss_A, ss_B, ss_C, ss_in, ss_out, ss_pair, dz0, F)
             decide_modes(x, v, dt, P, S, N, TH, CF, DF, MU, sideways, mode, fdir, anchor, anchored,
                          Mt_inv, F, need, avail, v_tol)
         # stage 1 (c = 0) — also the step-start record
         _stage(2 * n, x, v, z, H0, 0, v, dt, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, Kh, pairs_i, pairs_j,
-               conv, ss_A, ss_B, ss_C, ss_in, ss_out, ct, cs, k1z, k1v, F, f_t, f_n)
+               conv, ss_A, ss_B, ss_C, ss_in, ss_out, ss_pair, ct, cs, k1z, k1v, F, f_t, f_n)
         out_x[n, :] = x
         out_v[n, :] = v
         for c in range(nc):
@@ -239,9 +264,6 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
             out_tpos[n, c, 0], out_tpos[n, c, 1] = tangential_position(x, P[c], TH[c])
         if n == n_steps:
             break
-        if conv:
-            _history(vbuf, head, count, Kh, pairs_i, pairs_j, 1, dt, Hh)
-            _history(vbuf, head, count, Kh, pairs_i, pairs_j, 2, dt, H1)
         for d in range(6):
             k1x[d] = v[d]
             xs[d] = x[d] + 0.5 * dt * k1x[d]
@@ -250,7 +272,7 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
             zs[q] = z[q] + 0.5 * dt * k1z[q]
         # stage 2 (c = ½)
         _stage(2 * n + 1, xs, vs, zs, Hh, 1, v, dt, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, Kh, pairs_i, pairs_j,
-               conv, ss_A, ss_B, ss_C, ss_in, ss_out, ct, cs, k2z, k2v, F, f_t, f_n)
+               conv, ss_A, ss_B, ss_C, ss_in, ss_out, ss_pair, ct, cs, k2z, k2v, F, f_t, f_n)
         for d in range(6):
             k2x[d] = vs[d]
         for d in range(6):
@@ -260,7 +282,7 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
             zs[q] = z[q] + 0.5 * dt * k2z[q]
         # stage 3 (c = ½)
         _stage(2 * n + 1, xs, vs, zs, Hh, 1, v, dt, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, Kh, pairs_i, pairs_j,
-               conv, ss_A, ss_B, ss_C, ss_in, ss_out, ct, cs, k3z, k3v, F, f_t, f_n)
+               conv, ss_A, ss_B, ss_C, ss_in, ss_out, ss_pair, ct, cs, k3z, k3v, F, f_t, f_n)
         for d in range(6):
             k3x[d] = vs[d]
         for d in range(6):
@@ -270,7 +292,7 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
             zs[q] = z[q] + dt * k3z[q]
         # stage 4 (c = 1)
         _stage(2 * n + 2, xs, vs, zs, H1, 2, v, dt, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, Kh, pairs_i, pairs_j,
-               conv, ss_A, ss_B, ss_C, ss_in, ss_out, ct, cs, k4z, k4v, F, f_t, f_n)
+               conv, ss_A, ss_B, ss_C, ss_in, ss_out, ss_pair, ct, cs, k4z, k4v, F, f_t, f_n)
         for d in range(6):
             k4x[d] = vs[d]
         bad = False
@@ -299,6 +321,7 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
                 anchored[c] = False
         head = (head + 1) % nb
         vbuf[head, :] = v
+        vbuf[head + nb, :] = v
         if count < nb:
             count += 1
     return STATUS_OK, n_steps

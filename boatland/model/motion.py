@@ -29,13 +29,14 @@ class MotionArrays:
     ss_C: np.ndarray
     ss_in: np.ndarray
     ss_out: np.ndarray
+    ss_pair: np.ndarray
 
     @classmethod
     def without_memory(cls, Mt, C) -> "MotionArrays":
         """A system with no radiation memory (K ≡ 0): (M + A∞) x'' + C x = F — for analytic checks."""
         e = np.zeros(0, dtype=np.int64)
         return cls(np.linalg.inv(np.asarray(Mt, dtype=float)), np.asarray(C, dtype=float).copy(), True,
-                   np.zeros((0, 1)), e, e, 0, np.zeros((0, 0)), np.zeros(0), np.zeros(0), e, e)
+                   np.zeros((0, 1)), e, e, 0, np.zeros((0, 2)), np.zeros(0), np.zeros(0), e, e, e)
 
     def run(self, dt: float, n_steps: int, *, F_ext=None, thrust=None, r_p=(0.0, 0.0, 0.0), x0=None, v0=None,
             Bv=None, Bq=None, contacts=None, v_tol: float = 1e-6, limit_trans: float = 1e3,
@@ -66,7 +67,7 @@ class MotionArrays:
         status, last = run_cummins(
             float(dt), int(n_steps), self.Mt_inv, self.C, vec(Bv), vec(Bq), F_ext, thrust,
             np.asarray(r_p, dtype=float), vec(x0), vec(v0), self.conv, self.Kh, self.pairs_i, self.pairs_j,
-            self.n_hist, self.ss_A, self.ss_B, self.ss_C, self.ss_in, self.ss_out, contacts, float(v_tol),
+            self.n_hist, self.ss_A, self.ss_B, self.ss_C, self.ss_in, self.ss_out, self.ss_pair, contacts, float(v_tol),
             float(limit_trans), float(limit_rot), out["x"], out["v"], out["mode"], out["fn"], out["ft"],
             out["needed"], out["available"], out["tpos"])
         out = {k: a[:last + 1] for k, a in out.items()}
@@ -101,6 +102,7 @@ def compile_motion(db: HydroDB, memory: RadiationMemory, dt: float, *, method: s
     if db.M is None:
         raise ValueError("the database has no mass matrix: give mass, centre of gravity and inertia")
     Mt = db.M + memory.irf.A_inf
+    Mt = 0.5 * (Mt + Mt.T)  # A∞ is symmetric in theory; BEM round-off leaves ~1e-5 relative asymmetry
     pairs = [(i, j) for i in range(6) for j in range(6) if memory.irf.significant[i, j]]
     T_K = float(memory.irf.t[-1]) if memory_length is None else float(memory_length)
     empty_i = np.zeros(0, dtype=np.int64)
@@ -109,7 +111,7 @@ def compile_motion(db: HydroDB, memory: RadiationMemory, dt: float, *, method: s
         pi = np.array([p[0] for p in pairs], dtype=np.int64)
         pj = np.array([p[1] for p in pairs], dtype=np.int64)
         return MotionArrays(np.linalg.inv(Mt), db.C.copy(), True, Kh, pi, pj, int(round(T_K / dt)),
-                            np.zeros((0, 0)), np.zeros(0), np.zeros(0), empty_i, empty_i)
+                            np.zeros((0, 2)), np.zeros(0), np.zeros(0), empty_i, empty_i, empty_i)
     if method != "state_space":
         raise ValueError(f"method must be 'convolution' or 'state_space', got {method!r}")
     ss = memory.state_space
@@ -125,6 +127,16 @@ def compile_motion(db: HydroDB, memory: RadiationMemory, dt: float, *, method: s
         A[k:k + o, k:k + o], B[k:k + o], Cr[k:k + o] = f.A, f.B, f.C
         s_in[k:k + o], s_out[k:k + o] = j, i
         k += o
+    # modal form: every state couples to itself and at most one partner (2×2 block of a complex pair)
+    A2 = np.zeros((n, 2))
+    pair = np.full(n, -1, dtype=np.int64)
+    for s_ in range(n):
+        A2[s_, 0] = A[s_, s_]
+        others = [q for q in np.flatnonzero(A[s_]) if q != s_]
+        if len(others) > 1:
+            raise ValueError("state-space blocks larger than 2×2: not a modal realisation")
+        if others:
+            pair[s_], A2[s_, 1] = others[0], A[s_, others[0]]
     return MotionArrays(np.linalg.inv(Mt), db.C.copy(), False, np.zeros((0, 1)), empty_i, empty_i, 0,
-                        A, B, Cr, s_in, s_out)
+                        A2, B, Cr, s_in, s_out, pair)
 

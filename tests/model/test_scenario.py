@@ -14,6 +14,7 @@ from boatland.errors import BoatlandInputError
 from boatland.model.hydrodb import HullMesh, HydroDB, rigid_body_mass_matrix
 from boatland.model.scenario import Scenario, ScenarioWarning, json_schema, load_scenario, scenario_from_dict
 from boatland.model.scenario_checks import contact_period, roll_critical_damping
+from boatland.model.scenario_schema import MEMORY_DEFAULT
 from boatland.model.seastate import RegularWave, SeaState
 from boatland.model.tomlspec import SpecError
 
@@ -279,7 +280,7 @@ def test_defaults_are_filled_once():
     s = make(remove=("simulation.dt", "thrust", "sea"))
     assert s.simulation.dt is None and s.time_step() == 0.05
     assert s.simulation.start_ramp == 0.0 and s.thrust is None and s.sea is None
-    assert s.radiation.method == "convolution" and s.radiation.memory == 30.0
+    assert s.radiation.method == "convolution" and s.radiation.memory == MEMORY_DEFAULT
     assert s.incidents.slip_distance == (0.1,) and s.incidents.roll_limit_deg == (10.0,)
     assert (s.fender.k_v, s.fender.v_ref, s.fender.delta, s.fender.sideways) == (0.0, 0.2, 1.5, True)
     assert np.array_equal(s.initial.displacement, np.zeros(6))
@@ -498,6 +499,6 @@ def test_json_schema_carries_docs_units_and_defaults():
     assert schema["$schema"] == "https://json-schema.org/draft/2020-12/schema"
     sim = schema["properties"]["simulation"]
     assert sim["required"] == ["duration"] and "[s]" in sim["properties"]["duration"]["description"]
-    assert schema["properties"]["radiation"]["properties"]["memory"]["default"] == 30.0
+    assert schema["properties"]["radiation"]["properties"]["memory"]["default"] == MEMORY_DEFAULT
     assert schema["properties"]["fender"]["properties"]["points"]["items"]["minItems"] == 3
     json.dumps(schema)  # serialisable
