@@ -6,9 +6,10 @@ Figures go to bench/README.md by hand, with the machine and date.
 
 from __future__ import annotations
 
+from _timing import best_of
+
 import platform
 import tempfile
-import time
 from pathlib import Path
 
 from boatland.hydro import read_hydro, write_bemio
@@ -23,21 +24,13 @@ CASES = {
 }
 
 
-def best_of(fn, n=5):
-    times = []
-    for _ in range(n):
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-    return min(times)
-
 
 def main():
     print(f"# {platform.processor() or platform.machine()}, Python {platform.python_version()}")
     print("| case | read [ms] |")
     print("|---|---|")
     for name, path in CASES.items():
-        print(f"| {name} | {1e3 * best_of(lambda: read_hydro(path)):.1f} |")
+        print(f"| {name} | {1e3 * best_of(lambda: read_hydro(path))[0]:.1f} |")
     try:
         from boatland.hydro.builtin import load_builtin
     except ImportError:
@@ -46,8 +39,8 @@ def main():
         db = load_builtin(name)
         with tempfile.TemporaryDirectory() as tmp:
             p = Path(tmp) / "db.h5"
-            tw = best_of(lambda: write_bemio(db, p))
-            tr = best_of(lambda: read_hydro(p))
+            tw = best_of(lambda: write_bemio(db, p))[0]
+            tr = best_of(lambda: read_hydro(p))[0]
         print(f"| {name} write / read ({db.n_freq} ω, {db.n_dir} β) | {1e3 * tw:.1f} / {1e3 * tr:.1f} |")
 
 

@@ -6,20 +6,13 @@ Prints a Markdown table; copy it to bench/README.md with the machine and date.
 
 from __future__ import annotations
 
+from _timing import best_of
+
 import platform
-import time
 
 from boatland.hydro.builtin import load_builtin
 from boatland.model.radiation import radiation_memory
 
-
-def best_of(fn, n=5):
-    times = []
-    for _ in range(n):
-        t0 = time.perf_counter()
-        out = fn()
-        times.append(time.perf_counter() - t0)
-    return min(times), out
 
 
 def main():

@@ -7,23 +7,15 @@ Run: ``python bench/bench_trial.py``. Goal (issue 5): ≥ 10 000× real time wit
 
 from __future__ import annotations
 
-import platform
-import time
+from _timing import best_of
 
+import platform
 import numpy as np
 
 from boatland.scenario_check import default_scenario_path, load_checked
 from boatland.trial.simulate import contact_arrays, prepare_memory, simulate, thrust_series
 from boatland.model.motion import compile_motion
 
-
-def best(fn, n=3):
-    out = []
-    for _ in range(n):
-        t0 = time.perf_counter()
-        fn()
-        out.append(time.perf_counter() - t0)
-    return min(out)
 
 
 def main():
@@ -45,27 +37,11 @@ def main():
             th = thrust_series(sc, dt, n)
             ct = contact_arrays(sc, db)
             run = lambda: arr.run(dt, n, F_ext=F, thrust=th, r_p=sc.thrust.position, contacts=ct)  # noqa: E731
-            run()
-            t_int = best(run)
-            t_all = best(lambda: simulate(sc, db, memory=mem))
+            t_int = best_of(run, 3)[0]
+            t_all = best_of(lambda: simulate(sc, db, memory=mem), 3)[0]
             size = f"{arr.ss_A.shape[0]} states" if method == "state_space" else f"{arr.n_hist} × {arr.pairs_i.size}"
             print(f"| {method} | {memory:g} | {size} | {t_int:.3f} | {n / t_int:,.0f} | "
                   f"{sc.simulation.duration / t_int:,.0f} | {t_all:.3f} |")
-    # contacts: cost of none / one / two contacts (convolution, 40 s)
-    print()
-    print("| contacts | integrate [s] | × real time |")
-    print("|---|---|---|")
-    sc = scenario
-    dt, n = sc.time_step(db), sc.n_steps(db)
-    mem = prepare_memory(sc, db)
-    arr = compile_motion(db, mem, dt, memory_length=sc.radiation.memory)
-    F = np.zeros((2 * n + 1, 6))
-    th = thrust_series(sc, dt, n)
-    ct = contact_arrays(sc, db)
-    for k in (0, 1, 2):
-        sub = tuple(a[:k] if isinstance(a, np.ndarray) else a for a in ct)
-        t_int = best(lambda: arr.run(dt, n, F_ext=F, thrust=th, r_p=sc.thrust.position, contacts=sub))
-        print(f"| {k} | {t_int:.3f} | {sc.simulation.duration / t_int:,.0f} |")
 
 
 if __name__ == "__main__":

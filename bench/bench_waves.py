@@ -7,11 +7,12 @@ figures go to bench/README.md by hand. Goal (issue 4): a 30-min excitation serie
 
 from __future__ import annotations
 
+from _timing import best_of
+
 import datetime
 import math
 import os
 import platform
-import time
 
 import numpy as np
 
@@ -21,15 +22,6 @@ from boatland.waves.excitation import excitation_series
 from boatland.waves.realisation import Components
 from boatland.waves.synthesis import elevation_series
 
-
-def best_of(fn, n=5):
-    fn()  # warm-up (numba compile or cache load)
-    times = []
-    for _ in range(n):
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-    return min(times)
 
 
 def cpu_name() -> str:
@@ -55,14 +47,14 @@ def main():
     w = np.sort(rng.uniform(0.4, 3.9, N))
     comps = Components(w, w ** 2 / db.g, rng.uniform(0.0, 0.05, N), rng.uniform(0.0, 2 * math.pi, N),
                        rng.uniform(0.0, 2 * math.pi, N))
-    t_exc = best_of(lambda: excitation_series(comps, omega, beta, X, 3.0, -2.0, 0.3, 0.0, 0.5 * dt, n_t, 14.0))
+    t_exc = best_of(lambda: excitation_series(comps, omega, beta, X, 3.0, -2.0, 0.3, 0.0, 0.5 * dt, n_t, 14.0))[0]
 
     sea = SeaState(parts=SpectrumPart(Hs=1.5, Tp=7.0, spreading=10.0, direction_deg=180.0))
-    t_real = best_of(lambda: sea.realise(1, duration))
+    t_real = best_of(lambda: sea.realise(1, duration))[0]
     c = sea.realise(1, duration)
-    t_eta = best_of(lambda: elevation_series(c, 0.0, 0.0, 0.0, 0.5 * dt, n_t))
+    t_eta = best_of(lambda: elevation_series(c, 0.0, 0.0, 0.0, 0.5 * dt, n_t))[0]
     t_full = best_of(lambda: wave_excitation(sea.realise(1, duration), db, dt=dt, n_steps=n_steps,
-                                             ramp_time=sea.default_ramp_time))
+                                             ramp_time=sea.default_ramp_time))[0]
 
     print(f"# {cpu_name()}, {os.cpu_count()} CPU, Python {platform.python_version()}, numpy {np.__version__}, "
           f"{datetime.date.today().isoformat()} (best of 5 after warm-up)")

@@ -32,7 +32,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from boatland.contact.fender import OPEN, STICK, contact_forces, decide_modes, tangential_position
+from boatland.contact.fender import STICK, contact_forces, decide_modes, tangential_position
 from boatland.rigid import rotation_matrix
 
 __all__ = ["run_cummins", "STATUS_OK", "STATUS_NAN", "STATUS_RUNAWAY", "STATUS_MESSAGES"]
@@ -158,6 +158,19 @@ def _stage(t_idx, x, v, z, mu_hist, c2, v_n, dt, Mt_inv, C, Bv, Bq, F_ext, thrus
 
 
 @njit(cache=True)
+def _trial_state(x, v, z, v_stage, kv, kz, h, kx, xs, vs, zs):
+    """RK4 stage update: kx = the stage velocity, then (xs, vs, zs) = (x, v, z) + h (kx, kv, kz).
+    ``v_stage`` may be ``vs`` itself (it is read before being overwritten)."""
+    for d in range(6):
+        kx[d] = v_stage[d]
+    for d in range(6):
+        xs[d] = x[d] + h * kx[d]
+        vs[d] = v[d] + h * kv[d]
+    for q in range(z.shape[0]):
+        zs[q] = z[q] + h * kz[q]
+
+
+@njit(cache=True)
 def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
                 conv, Kh, pairs_i, pairs_j, n_hist, ss_A, ss_B, ss_C, ss_in, ss_out, ss_pair,
                 ct, v_tol, limit_trans, limit_rot, out_x, out_v, out_mode, out_fn, out_ft, out_need,
@@ -264,32 +277,15 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
             out_tpos[n, c, 0], out_tpos[n, c, 1] = tangential_position(x, P[c], TH[c])
         if n == n_steps:
             break
-        for d in range(6):
-            k1x[d] = v[d]
-            xs[d] = x[d] + 0.5 * dt * k1x[d]
-            vs[d] = v[d] + 0.5 * dt * k1v[d]
-        for q in range(n_s):
-            zs[q] = z[q] + 0.5 * dt * k1z[q]
+        _trial_state(x, v, z, v, k1v, k1z, 0.5 * dt, k1x, xs, vs, zs)
         # stage 2 (c = ½)
         _stage(2 * n + 1, xs, vs, zs, Hh, 1, v, dt, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, Kh, pairs_i, pairs_j,
                conv, ss_A, ss_B, ss_C, ss_in, ss_out, ss_pair, ct, cs, k2z, k2v, F, f_t, f_n)
-        for d in range(6):
-            k2x[d] = vs[d]
-        for d in range(6):
-            xs[d] = x[d] + 0.5 * dt * k2x[d]
-            vs[d] = v[d] + 0.5 * dt * k2v[d]
-        for q in range(n_s):
-            zs[q] = z[q] + 0.5 * dt * k2z[q]
+        _trial_state(x, v, z, vs, k2v, k2z, 0.5 * dt, k2x, xs, vs, zs)
         # stage 3 (c = ½)
         _stage(2 * n + 1, xs, vs, zs, Hh, 1, v, dt, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, Kh, pairs_i, pairs_j,
                conv, ss_A, ss_B, ss_C, ss_in, ss_out, ss_pair, ct, cs, k3z, k3v, F, f_t, f_n)
-        for d in range(6):
-            k3x[d] = vs[d]
-        for d in range(6):
-            xs[d] = x[d] + dt * k3x[d]
-            vs[d] = v[d] + dt * k3v[d]
-        for q in range(n_s):
-            zs[q] = z[q] + dt * k3z[q]
+        _trial_state(x, v, z, vs, k3v, k3z, dt, k3x, xs, vs, zs)
         # stage 4 (c = 1)
         _stage(2 * n + 2, xs, vs, zs, H1, 2, v, dt, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, Kh, pairs_i, pairs_j,
                conv, ss_A, ss_B, ss_C, ss_in, ss_out, ss_pair, ct, cs, k4z, k4v, F, f_t, f_n)
