@@ -1,0 +1,52 @@
+"""One landing trial end to end on the built-in CTV (scenarios/ctv_landing.toml)."""
+
+import numpy as np
+import pytest
+
+from boatland.scenario_check import default_scenario_path, load_checked
+from boatland.trial.simulate import BlowUpError, simulate
+
+
+@pytest.fixture(scope="module")
+def landing():
+    scenario, db, _ = load_checked(default_scenario_path())
+    return scenario, db
+
+
+def test_calm_water_holds_the_thrust_symmetrically(landing):
+    """No waves: after the ramp the two tubes share the 80 kN push, both stuck, no sway/roll/yaw."""
+    sc, db = landing
+    r = simulate(sc.replace({"sea": None, "simulation.duration": 120.0}), db)
+    assert (r.mode[-200:] == 1).all()
+    assert r.fn[-1] == pytest.approx([40e3, 40e3], rel=1e-3)
+    assert np.max(np.abs(r.x[:, [1, 3, 5]])) < 1e-9
+
+
+def test_stuck_fender_does_not_drift_over_1200_s_of_waves(landing):
+    """Hs 0.2 m head seas, 80 kN: stuck throughout; the fender points move < 1e-6 m (measured 5e-9 m)."""
+    sc, db = landing
+    r = simulate(sc.replace({"sea.Hs": 0.2, "simulation.duration": 1220.0}), db)
+    k = int(np.searchsorted(r.t, sc.thrust.ramp))
+    assert (r.mode[k:] == 1).all() and not r.slip_events()
+    assert np.abs(r.tpos[k:] - r.tpos[k]).max() < 1e-6
+
+
+def test_head_seas_stay_symmetric_and_slip_is_reported(landing):
+    """The default trial (Hs 1.5 m): both tubes slip together (ties released together), sway/roll/yaw
+    stay at round-off, every slip event carries needed > available."""
+    sc, db = landing
+    r = simulate(sc.replace({"simulation.duration": 120.0}), db)
+    assert np.max(np.abs(r.x[:, [1, 3, 5]])) < 1e-8
+    slips = r.slip_events()
+    assert slips and all(e.needed > e.available for e in slips)
+    s = r.summary()
+    assert s["time_to_first_slip"] == slips[0].t and s["max_slip_distance"] > 0
+
+
+def test_blow_up_is_stopped_and_explained(landing):
+    """A fender far too stiff for dt: the run stops at the blow-up with time, state and likely cause."""
+    sc, db = landing
+    bad = sc.replace({"fender.stiffness": 5e9, "simulation.duration": 30.0, "simulation.dt": 0.05,
+                      "sea": None})
+    with pytest.raises(BlowUpError, match=r"integration stopped at t = .* likely cause: dt = 0.05 s is large"):
+        simulate(bad, db)
