@@ -3,6 +3,7 @@
 import json
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -83,7 +84,7 @@ def test_irf_bad_settings_exit_2(refdata, tmp_path):
     assert r.returncode == 2 and "increase t_max" in r.stderr and "Traceback" not in r.stderr
 
 
-SCENARIOS = sorted((REPO_ROOT := __import__("pathlib").Path(__file__).resolve().parents[1] / "scenarios").glob("*.toml"))
+SCENARIOS = sorted((Path(__file__).resolve().parents[1] / "scenarios").glob("*.toml"))
 
 
 @pytest.mark.parametrize("scenario", SCENARIOS, ids=lambda p: p.stem)

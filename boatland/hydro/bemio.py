@@ -21,6 +21,7 @@ write; rewriting a database with :func:`write_bemio` keeps nothing else.
 
 from __future__ import annotations
 
+import dataclasses
 import json
 from pathlib import Path
 
@@ -299,7 +300,7 @@ def write_radiation(path: str | Path, memory, rho: float) -> Path:
                 x[key] = getattr(irf, key)
             x["significant"] = irf.significant.astype(np.int8)
             x.attrs["A_inf_source"] = irf.A_inf_source
-            x.attrs["settings"] = json.dumps({k: v for k, v in irf.settings.__dict__.items()})
+            x.attrs["settings"] = json.dumps(dataclasses.asdict(irf.settings))
             x.attrs["omega_max_used"] = irf.omega_max_used
             x.attrs["check_band"] = np.asarray(irf.check_band, dtype=float)
             x.attrs["notes"] = json.dumps(list(irf.notes))

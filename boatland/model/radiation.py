@@ -7,6 +7,7 @@ result. Storage in the database file is in :mod:`boatland.hydro.bemio`.
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
@@ -51,7 +52,7 @@ def radiation_memory(db: HydroDB, settings: IRFSettings | None = None, *, fit: b
     if settings is None:
         settings = IRFSettings(dt=default_dt(db.omega[-1]))
     if settings.length_scale == 1.0 and db.disp_vol > 0:
-        settings = IRFSettings(**{**settings.__dict__, "length_scale": float(db.disp_vol ** (1 / 3))})
+        settings = dataclasses.replace(settings, length_scale=float(db.disp_vol ** (1 / 3)))
     irf = compute_irf(db.omega, db.A, db.B, db.A_inf, settings)
     ss = fit_state_space(irf, db.omega, db.B, target_r2=target_r2, max_order=max_order) if fit else None
     return RadiationMemory(irf=irf, state_space=ss)

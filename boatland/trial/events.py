@@ -15,9 +15,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from boatland.contact.fender import OPEN, SLIP, STICK
+
 __all__ = ["Event", "SlipEpisode", "extract_events", "slip_episodes", "first_exceedance"]
 
-OPEN, STICK, SLIP = 0, 1, 2
 KIND = {(OPEN, STICK): "contact made", (OPEN, SLIP): "contact made", (STICK, OPEN): "contact lost",
         (SLIP, OPEN): "contact lost", (STICK, SLIP): "stick→slip", (SLIP, STICK): "slip→stick"}
 
