@@ -141,8 +141,10 @@ def _parser() -> argparse.ArgumentParser:
                      help="negative damping: clip to zero (default), cut the band, or keep")
     irf.add_argument("--band", type=float, nargs=2, metavar=("LO", "HI"),
                      help="frequency band [rad/s] of the round-trip check (default: the whole band)")
-    irf.add_argument("--target-r2", type=float, default=0.999, help="state-space fit target R² (default 0.999)")
-    irf.add_argument("--max-order", type=int, default=12, help="largest state-space order per pair (default 12)")
+    irf.add_argument("--target-r2", type=float,
+                     help="state-space fit target R² (default 0.99999: boatland.model.radiation.TARGET_R2)")
+    irf.add_argument("--max-order", type=int,
+                     help="largest state-space order per pair (default 40: boatland.model.radiation.MAX_ORDER)")
     irf.add_argument("--no-fit", action="store_true", help="skip the state-space fit")
     irf.add_argument("--plot", type=Path, metavar="PNG", help="write a figure of K(t), B and A")
     irf.add_argument("-o", "--output", type=Path,
@@ -209,14 +211,15 @@ def _cmd_irf(args) -> int:
     from boatland.hydro.bemio import write_bemio, write_radiation
     from boatland.hydro.irf_report import irf_summary, irf_table, plot_irf
     from boatland.irf.impulse import IRFSettings
-    from boatland.model.radiation import default_dt, radiation_memory
+    from boatland.model.radiation import MAX_ORDER, TARGET_R2, default_dt, radiation_memory
 
     db = _resolve_db(args.database)
     dt = args.dt if args.dt is not None else default_dt(db.omega[-1])
     settings = IRFSettings(t_max=args.t_max, dt=dt, tail=args.tail, taper=args.taper, clean=args.clean,
                            check_band=tuple(args.band) if args.band else None)
-    memory = radiation_memory(db, settings, fit=not args.no_fit, target_r2=args.target_r2,
-                              max_order=args.max_order)
+    memory = radiation_memory(db, settings, fit=not args.no_fit,
+                              target_r2=TARGET_R2 if args.target_r2 is None else args.target_r2,
+                              max_order=MAX_ORDER if args.max_order is None else args.max_order)
     print(json.dumps(irf_summary(memory), indent=2) if args.json else irf_table(memory))
     if args.plot:
         plot_irf(db, memory, args.plot)

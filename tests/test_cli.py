@@ -20,6 +20,15 @@ def test_help_lists_commands():
     assert r.returncode == 0 and all(c in r.stdout for c in ("import", "info", "build", "list"))
 
 
+def test_irf_help_states_the_library_fit_defaults():
+    from boatland.model.radiation import MAX_ORDER, TARGET_R2
+
+    r = run("irf", "--help")
+    text = " ".join(r.stdout.split())
+    assert r.returncode == 0
+    assert f"default {TARGET_R2:g}" in text and f"default {MAX_ORDER}" in text
+
+
 def test_import_then_info(refdata, tmp_path):
     out = tmp_path / "sphere.h5"
     r = run("hydro", "import", refdata / "bemio_sphere" / "sphere.h5", "-o", out)

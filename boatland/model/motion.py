@@ -83,6 +83,22 @@ def _resample_irf(memory: RadiationMemory, pairs, h: float, t_max: float) -> np.
     return np.array([np.interp(t, irf.t, irf.K[i, j], right=0.0) for i, j in pairs]).reshape(len(pairs), t.size)
 
 
+def rk4_amplification(z: np.ndarray) -> np.ndarray:
+    """|R(z)| of classic RK4 on ẏ = p y with z = p Δt: R = 1 + z + z²/2 + z³/6 + z⁴/24."""
+    return np.abs(1 + z + z ** 2 / 2 + z ** 3 / 6 + z ** 4 / 24)
+
+
+def _check_rk4_stable(blocks, dt: float) -> None:
+    """Every state-space pole must lie in RK4's stability region at ``dt`` (|R(pΔt)| ≤ 1)."""
+    for i, j, f in blocks:
+        p = np.linalg.eigvals(f.A)
+        if np.any(rk4_amplification(p * dt) > 1.0):
+            fastest = float(np.max(np.abs(p)))
+            raise ValueError(f"the state-space fit of pair ({i + 1},{j + 1}) has a pole of |p| = {fastest:.3g} "
+                             f"rad/s, outside RK4's stability region at dt = {dt:g} s; use dt ≤ "
+                             f"{2.5 / fastest:.3g} s or the convolution")
+
+
 def compile_motion(db: HydroDB, memory: RadiationMemory, dt: float, *, method: str = "convolution",
                    memory_length: float | None = None) -> MotionArrays:
     """Kernel arrays for ``db`` with radiation ``memory`` at time step ``dt``.
@@ -118,6 +134,7 @@ def compile_motion(db: HydroDB, memory: RadiationMemory, dt: float, *, method: s
     if ss is None:
         raise ValueError("no state-space fit in this radiation memory")
     blocks = [(i, j, f) for (i, j), f in sorted(ss.pairs.items()) if f.order > 0]
+    _check_rk4_stable(blocks, dt)
     n = sum(f.order for _, _, f in blocks)
     A = np.zeros((n, n)); B = np.zeros(n); Cr = np.zeros(n)
     s_in = np.zeros(n, dtype=np.int64); s_out = np.zeros(n, dtype=np.int64)

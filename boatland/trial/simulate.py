@@ -15,6 +15,7 @@ import time
 import numpy as np
 
 from boatland import __version__
+from boatland.errors import BoatlandInputError
 from boatland.irf.impulse import IRFSettings
 from boatland.model.motion import compile_motion
 from boatland.model.radiation import RadiationMemory, default_dt, radiation_memory
@@ -131,7 +132,11 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
     dt = scenario.time_step(db)
     n = scenario.n_steps(db)
     memory = memory or prepare_memory(scenario, db)
-    arrays = compile_motion(db, memory, dt, method=scenario.radiation.method, memory_length=scenario.radiation.memory)
+    try:
+        arrays = compile_motion(db, memory, dt, method=scenario.radiation.method,
+                                memory_length=scenario.radiation.memory)
+    except ValueError as exc:  # a state-space pole too fast for dt: the scenario's choice, not a bug
+        raise BoatlandInputError(f"{scenario.source}: simulation.dt: {exc}") from None
     x0g, y0g, psi = scenario.start_pose()
     waves = scenario.wave_model(db)
     if waves is None:
