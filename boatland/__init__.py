@@ -5,7 +5,7 @@ Layers (each imports only from those below it; checked by import-linter in CI):
 
 1. kernels: :mod:`boatland.irf`, :mod:`boatland.contact`, :mod:`boatland.integrate`, :mod:`boatland.waves`
 2. model: :mod:`boatland.model` (validated, immutable data: hydrodynamic database, vessel, ...)
-3. services: simulation, campaigns, frequency-domain tools (coming)
+3. services: simulation (trial), frequency-domain RAOs (freqdomain); campaigns (coming)
 4. edges: :mod:`boatland.hydro` (BEM readers / writers / builder), :mod:`boatland.cli`
 """
 

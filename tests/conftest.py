@@ -16,3 +16,9 @@ def refdata() -> Path:
     if not REFDATA.is_dir():
         pytest.skip(f"reference data not found at {REFDATA} (expected ../shared/refdata beside the repo)")
     return REFDATA
+
+
+@pytest.fixture(scope="session")
+def repo_root() -> Path:
+    """The source checkout (scenario files live in its ``scenarios/``)."""
+    return REPO

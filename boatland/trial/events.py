@@ -3,10 +3,16 @@
 An *event* is a change of a contact's state between two step starts (modes 0 open, 1 stick, 2 slip):
 contact made / lost, stick → slip (a slip event, seed 002 §3.3: the fender starts to slide),
 slip → stick. A *slip episode* runs from a stick → slip event to the next re-stick or loss of
-contact; its slip distance is the largest displacement of the fender point, in the contact plane,
-from where it was stuck (vertical and horizontal along the plane). Incidents follow seed 002's
-definitions: slip distance above a threshold, roll above a limit, loss of contact — each reported
-with the time it first happens.
+contact; its slide is the largest displacement of the fender point, in the contact plane, from where
+it was stuck (vertical and horizontal along the plane). A contact that touches and slides before it
+first catches is still landing: that slide is not a slip episode.
+
+The *slip distance* of an incident is seed 002's (§4.2, SIMO runs): "the fender point of the vessel
+moves more than 10 cm away from its original position" — measured from where the contact first
+stuck after it was made (its landing position), so a run of short slides that each stay below the
+threshold but creep away from the landing position is an incident too (:func:`landing_offset`).
+Incidents: slip distance above a threshold, roll above a limit, loss of contact — each reported with
+the time it first happens.
 """
 
 from __future__ import annotations
@@ -17,7 +23,7 @@ import numpy as np
 
 from boatland.contact.fender import OPEN, SLIP, STICK
 
-__all__ = ["Event", "SlipEpisode", "extract_events", "slip_episodes", "first_exceedance"]
+__all__ = ["Event", "SlipEpisode", "extract_events", "slip_episodes", "landing_offset", "first_exceedance"]
 
 KIND = {(OPEN, STICK): "contact made", (OPEN, SLIP): "contact made", (STICK, OPEN): "contact lost",
         (SLIP, OPEN): "contact lost", (STICK, SLIP): "stick→slip", (SLIP, STICK): "slip→stick"}
@@ -76,15 +82,16 @@ def extract_events(t, mode, needed, available) -> list[Event]:
 
 
 def slip_episodes(t, mode, tpos) -> list[SlipEpisode]:
-    """Slip episodes of every contact; ``tpos`` (n, Nc, 2) the fender points' (vertical, horizontal)
-    position in the contact plane. An episode still running at the end is closed there."""
+    """Slip episodes (stick → slip until re-stick or loss of contact) of every contact; ``tpos``
+    (n, Nc, 2) the fender points' (vertical, horizontal) position in the contact plane. An episode
+    still running at the end is closed there."""
     episodes = []
     mode = np.asarray(mode)
     n = mode.shape[0]
     for c in range(mode.shape[1]):
-        starts = np.nonzero((mode[1:, c] == SLIP) & (mode[:-1, c] != SLIP))[0] + 1
+        starts = np.nonzero((mode[1:, c] == SLIP) & (mode[:-1, c] == STICK))[0] + 1
         for k0 in starts:
-            origin = tpos[k0 - 1, c] if mode[k0 - 1, c] == STICK else tpos[k0, c]
+            origin = tpos[k0 - 1, c]
             after = np.nonzero(mode[k0:, c] != SLIP)[0]
             k1 = k0 + int(after[0]) if after.size else n - 1
             ended = "end of run" if not after.size else ("re-stick" if mode[k1, c] == STICK else "contact lost")
@@ -95,6 +102,31 @@ def slip_episodes(t, mode, tpos) -> list[SlipEpisode]:
                                         float(d[j, 1]), ended))
     episodes.sort(key=lambda e: (e.t_start, e.contact))
     return episodes
+
+
+def landing_offset(mode, tpos) -> np.ndarray:
+    """Distance [m] of each fender point from its landing position, per step: (n, Nc).
+
+    The landing position of a contact is where it first stuck after it was made; it holds until the
+    contact is lost (a new landing then has a new one). NaN while the contact is open or has not yet
+    caught. This is seed 002's incident slip distance (fender point "more than 10 cm away from its
+    original position").
+    """
+    mode = np.asarray(mode)
+    tpos = np.asarray(tpos)
+    n, nc = mode.shape
+    out = np.full((n, nc), np.nan)
+    for c in range(nc):
+        touching = mode[:, c] != OPEN
+        spell = np.cumsum(np.r_[touching[:1], touching[1:] & ~touching[:-1]]) * touching  # 0 while open
+        stuck = np.nonzero(mode[:, c] == STICK)[0]
+        spells, first = np.unique(spell[stuck], return_index=True)
+        for sp, k0 in zip(spells, stuck[first]):  # k0: first stick of the spell = the landing position
+            ks = np.nonzero(spell == sp)[0]
+            ks = ks[ks >= k0]
+            d = tpos[ks, c] - tpos[k0, c]
+            out[ks, c] = np.hypot(d[:, 0], d[:, 1])
+    return out
 
 
 def first_exceedance(t, values, limit) -> float | None:

@@ -12,7 +12,7 @@ from boatland import __version__
 from boatland.atomic import atomic_path
 from boatland.conventions import DOF_NAMES, DOF_UNITS
 from boatland.model.scenario_parts import Incidents
-from boatland.trial.events import Event, SlipEpisode, first_exceedance
+from boatland.trial.events import Event, SlipEpisode, first_exceedance, landing_offset
 
 __all__ = ["Result"]
 
@@ -73,24 +73,26 @@ class Result:
     def slip_events(self) -> list[Event]:
         return [e for e in self.events if e.kind == "stick→slip"]
 
+    def landing_offset(self) -> np.ndarray:
+        """(n, Nc) distance [m] of each fender point from where it landed (NaN while open or not yet
+        caught): the slip distance of seed 002's incident, see :func:`boatland.trial.events.landing_offset`."""
+        return landing_offset(self.mode, self.tpos)
+
+    def _worst_offset(self) -> np.ndarray | None:
+        """Largest landing offset over the contacts per step (0 where none has landed); None without contacts."""
+        if not self.mode.shape[1]:
+            return None
+        off = self.landing_offset()
+        return np.where(np.isnan(off), 0.0, off).max(axis=1)
+
     def incident_times(self) -> dict[str, float | None]:
         """First time of each incident definition (None: did not happen)."""
         out: dict[str, float | None] = {}
         slip_limits = self.incidents.slip_distance if self.incidents is not None else (0.1,)
         roll_limits = self.incidents.roll_limit_deg if self.incidents is not None else ()
+        worst = self._worst_offset()
         for limit in slip_limits:
-            first = None
-            for ep in self.episodes:  # the distance passes the threshold during the episode: find when
-                if ep.distance <= limit:
-                    continue
-                k0 = int(np.searchsorted(self.t, ep.t_start))
-                k1 = int(np.searchsorted(self.t, ep.t_end)) + 1
-                origin = self.tpos[max(k0 - 1, 0), ep.contact]
-                d = np.hypot(*(self.tpos[k0:k1, ep.contact] - origin).T)
-                tt = first_exceedance(self.t[k0:k1], d, limit)
-                if tt is not None and (first is None or tt < first):
-                    first = tt
-            out[f"slip > {limit:g} m"] = first
+            out[f"slip > {limit:g} m"] = first_exceedance(self.t, worst, limit) if worst is not None else None
         for limit in roll_limits:
             out[f"roll > {limit:g}°"] = first_exceedance(self.t, self.x[:, 3], np.radians(limit))
         if self.mode.shape[1]:
@@ -101,6 +103,7 @@ class Result:
     def summary(self) -> dict:
         """Figures a user reads first (JSON-able)."""
         slips = self.slip_events()
+        worst = self._worst_offset()
         touching = self.mode > 0
         fn = np.where(touching, self.fn, np.nan)
         return {
@@ -108,7 +111,8 @@ class Result:
             "duration": float(self.t[-1]),
             "slip_events": len(slips),
             "time_to_first_slip": slips[0].t if slips else None,
-            "max_slip_distance": max((e.distance for e in self.episodes), default=0.0),
+            "max_slip_distance": float(worst.max()) if worst is not None and worst.size else 0.0,
+            "max_single_slide": max((e.distance for e in self.episodes), default=0.0),
             "max_normal_force": None if not touching.any() else float(np.nanmax(fn)),
             "min_normal_force_in_contact": None if not touching.any() else float(np.nanmin(fn)),
             "contact_fraction": float(touching.all(axis=1).mean()) if self.mode.shape[1] else 0.0,
@@ -125,7 +129,8 @@ class Result:
             first = s["time_to_first_slip"]
             lines += [
                 f"  slip events          {s['slip_events']}" + (f" (first at t = {first:.2f} s)" if first is not None else ""),
-                f"  max slip distance    {s['max_slip_distance']:.3f} m",
+                f"  max slip distance    {s['max_slip_distance']:.3f} m from the landing position "
+                f"(largest single slide {s['max_single_slide']:.3f} m)",
                 f"  normal force         max {s['max_normal_force'] / 1e3:.3g} kN, min in contact "
                 f"{s['min_normal_force_in_contact'] / 1e3:.3g} kN" if s["max_normal_force"] is not None
                 else "  normal force         never in contact",

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from boatland.trial.events import extract_events, first_exceedance, slip_episodes
+from boatland.trial.events import extract_events, first_exceedance, landing_offset, slip_episodes
 
 
 def records():
@@ -41,3 +41,20 @@ def test_first_exceedance():
     t = np.arange(5.0)
     assert first_exceedance(t, [0, 0.1, -0.3, 0.5, 0], 0.2) == 2.0
     assert first_exceedance(t, np.zeros(5), 0.2) is None
+
+
+def test_landing_offset_accumulates_short_slides_and_resets_on_a_new_landing():
+    """Seed 002's incident: the fender point more than a threshold from where it landed. Three slides of
+    4 cm each, with re-sticks between, are three episodes below 5 cm but 12 cm from the landing."""
+    mode = np.array([0, 2, 2, 1, 2, 1, 2, 1, 2, 1, 0, 2, 1, 1])[:, None]
+    z = np.array([0, .3, .2, .1, .06, .06, .02, .02, -.02, -.02, 0, 5.0, 4.0, 4.0])
+    tpos = np.zeros((14, 1, 2)); tpos[:, 0, 0] = z
+    t = np.arange(14.0)
+    eps = slip_episodes(t, mode, tpos)
+    assert [e.t_start for e in eps] == [4.0, 6.0, 8.0]                # the slide before it caught is landing
+    assert max(e.distance for e in eps) == pytest.approx(0.04)
+    off = landing_offset(mode, tpos)[:, 0]
+    assert np.isnan(off[:3]).all() and np.isnan(off[10:12]).all()    # open, or touching but not yet caught
+    assert off[9] == pytest.approx(0.12)                              # 0.10 → −0.02
+    assert off[12:] == pytest.approx([0.0, 0.0])                      # a new landing at 4.0 m: new origin
+    assert first_exceedance(t, np.nan_to_num(off), 0.05) == 6.0

@@ -1,0 +1,74 @@
+r"""Seed 001's tank outcome for Model 2 in sea state J03 (§4.3.3, Fig. 4.20; Table 5.3, 5.4).
+
+In the tank the catamaran model pushed its fender on the landing in JONSWAP waves (H_s = 0.1 m,
+ω_p = 4.97 rad/s, head seas): with 123.84 N of thrust the fender *remained fixed*; with 52 N it
+slipped at t ≈ 16 s. The thesis shows one record per thrust and does not state its length; its
+figures span the first few tens of seconds.
+
+We run both ship scenario files (``model2_j03.toml``: 123.84 N, ``model2_j03_52N.toml``: 52 N) over
+seeds 1–10 for their full 190 s, and count an *incident* when a fender point moves more than 1 cm from
+where it landed — seed 002's 10 cm incident (§4.2) at the model's 1:10 scale. Seed 002 §3.3/§4.2
+model the time to the first incident as exponential: the rate is estimated by maximum likelihood
+with censoring, λ̂ = (incidents) / (total exposure to waves), and the probability that a record of
+T seconds of waves holds is e^{−λ̂T}.
+
+Measured (2026-11-21, convolution memory 15 s, dt = T_p/100):
+
+=========  ==================  ====================  ======================  =================
+thrust     incident in 190 s   incident in 40 s      λ̂ [1/s]                 P(hold 40 s)
+=========  ==================  ====================  ======================  =================
+52 N       10/10               10/10 (median 8.1 s)  0.126                   0.006
+123.84 N   6/10                2/10                  0.00465                 0.83
+=========  ==================  ====================  ======================  =================
+
+So the simulator reproduces the tank's outcome for a tank-length record — 52 N slips in every
+seed, within seconds, as in the tank (16 s); 123.84 N holds in 8 of 10 — while over the 190 s
+(≈ 10 min full scale) of the scenario the 123.84 N landing sees a 1 cm incident in 6 of 10 seeds:
+more thrust lowers the incident rate about thirtyfold but does not make it zero.
+"""
+
+import numpy as np
+import pytest
+
+from boatland.scenario_check import load_checked
+from boatland.trial.simulate import prepare_memory, simulate, wave_start
+
+SEEDS = range(1, 11)
+LIMIT = 0.01       # [m] seed 002's 10 cm at 1:10
+RECORD = 40.0      # [s] of waves: a tank-length record
+
+
+def first_incidents(path):
+    scenario, db, _ = load_checked(path)
+    scenario = scenario.replace({"incidents.slip_distance": [LIMIT]})
+    memory = prepare_memory(scenario, db)
+    t0 = wave_start(scenario)
+    times = []
+    for seed in SEEDS:
+        r = simulate(scenario.replace({"simulation.seed": seed}), db, memory=memory)
+        assert r.completed
+        t = r.incident_times()[f"slip > {LIMIT:g} m"]
+        times.append(np.inf if t is None else t - t0)
+    return np.array(times), scenario.simulation.duration - t0
+
+
+def rate(times, exposure):
+    """Censored exponential MLE: incidents / total time at risk."""
+    hit = np.isfinite(times)
+    return hit.sum() / np.sum(np.where(hit, times, exposure))
+
+
+@pytest.mark.slow
+def test_j03_52N_slips_and_123N_holds_as_in_the_tank(repo_root):
+    weak, T = first_incidents(repo_root / "scenarios" / "model2_j03_52N.toml")
+    strong, _ = first_incidents(repo_root / "scenarios" / "model2_j03.toml")
+    lam_weak, lam_strong = rate(weak, T), rate(strong, T)
+    report = (f"52 N: incident in {np.isfinite(weak).sum()}/10 over {T:.0f} s, {np.sum(weak <= RECORD)}/10 "
+              f"within {RECORD:g} s (median {np.median(weak):.1f} s), λ = {lam_weak:.3g}/s; "
+              f"123.84 N: {np.isfinite(strong).sum()}/10 over {T:.0f} s, {np.sum(strong <= RECORD)}/10 within "
+              f"{RECORD:g} s, λ = {lam_strong:.3g}/s")
+    print(report)
+    assert np.sum(weak <= RECORD) >= 8, report            # slips in most seeds, within a tank record
+    assert np.sum(strong > RECORD) >= 7, report           # holds in most seeds over a tank record
+    assert np.exp(-lam_weak * RECORD) < 0.1 < 0.5 < np.exp(-lam_strong * RECORD), report
+    assert lam_weak > 10 * lam_strong, report
