@@ -268,7 +268,7 @@ def _cmd_run(args) -> int:
             print(f"running {scenario.name}: {scenario.simulation.duration:g} s at dt = {scenario.time_step(db):g} s "
                   f"({scenario.n_steps(db)} steps), {db.name}, radiation {scenario.radiation.method}", file=sys.stderr)
         try:
-            result = simulate(scenario, db)
+            result = _simulate_with_bar(simulate, scenario, db, show=not args.json)
         except BlowUpError as exc:
             print(f"boatland: error: {path}: {exc}", file=sys.stderr)
             return 3
@@ -284,6 +284,24 @@ def _cmd_run(args) -> int:
         if args.output:
             print(f"wrote {args.output}")
     return 0
+
+
+def _simulate_with_bar(simulate, scenario, db, *, show: bool):
+    """Run one trial with a progress bar on stderr (simulated seconds; hidden when stderr is not a
+    terminal or ``show`` is False)."""
+    if not show:
+        return simulate(scenario, db)
+    from tqdm import tqdm
+
+    dt = scenario.time_step(db)
+    with tqdm(total=round(scenario.n_steps(db) * dt, 2), unit="s", unit_scale=False, file=sys.stderr,
+              disable=None, leave=False, desc="simulated", dynamic_ncols=True,
+              bar_format="{desc} {n:.1f}/{total:.1f} s |{bar}| {elapsed}<{remaining}") as bar:
+        def progress(done, total):
+            bar.n = round(done * dt, 2)
+            bar.refresh()
+
+        return simulate(scenario, db, progress=progress)
 
 
 def _cmd_scenario_check(args) -> int:

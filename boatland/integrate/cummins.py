@@ -16,15 +16,21 @@ interval :math:`[t_n, t_n + c\Delta t]`, trapezoid with the stage velocity:
     \mu_c = \underbrace{\sum_{m=0}^{n} w_m \Delta t\, K((n-m+c)\Delta t)\,\dot x_m}_{H_c\ \text{(fixed in the step)}}
           + \frac{c\Delta t}{2}\left[K(c\Delta t)\dot x_n + K(0)\,\dot x_{stage}\right]
 
-with :math:`w_0 = w_n = ½`. K is therefore sampled every Δt/2. The history at c = 0 of step n+1 is
-the c = 1 history of step n plus the last interval with the accepted velocity, so two history sums
-are computed per step, over the significant DOF pairs only.
+with :math:`w_0 = w_n = ½`. K is therefore sampled every Δt/2. The three history sums (c = 0, ½, 1) are
+computed in one pass per step over the stored velocities, for the significant DOF pairs only.
 
 State space: the fitted systems :math:`\dot z = A_r z + B_r \dot x_j`, :math:`\mu_{ij} = C_r z` are
 appended to the RK4 state, so they are consistent at every stage by construction.
 
 All arrays are SI, DOF order surge..yaw, body motions small (linear hydrodynamics) while positions
 of force points follow the exact rotation :math:`R(\phi,\theta,\psi)` (z-y-x Euler angles).
+
+Speed: :func:`run_cummins` allocates every buffer before the first step; the helpers it calls per
+stage only index those arrays, so they are compiled without numba's reference counting
+(``_nrt=False``, as numba does for its own string helpers) and inlined (``forceinline``). Otherwise
+each call increfs and decrefs every array argument with an atomic operation — ~630 of them per step,
+three quarters of the time of a step without memory and contacts (bench/README.md). A helper that allocates cannot be
+compiled that way (numba refuses it).
 """
 
 from __future__ import annotations
@@ -32,7 +38,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from boatland.contact.fender import STICK, contact_forces, decide_modes, tangential_position
+from boatland.contact.fender import (STICK, contact_forces, contact_states, contact_workspace, decide_modes,
+                                     tangential_position)
 from boatland.rigid import rotation_matrix
 
 __all__ = ["run_cummins", "STATUS_OK", "STATUS_NAN", "STATUS_RUNAWAY", "STATUS_MESSAGES"]
@@ -47,10 +54,16 @@ STATUS_MESSAGES = {
 }
 
 
-@njit(cache=True)
-def _thrust(x, T, r_p, out):
-    """Generalised force of a push T along the body x axis applied at body point r_p (exact rotation)."""
-    R = rotation_matrix(x[3], x[4], x[5])
+#: RK4 stages: time of each stage in half steps into the step (c = 0, ½, ½, 1 → 0, 1, 1, 2; also the row
+#: of the history sums) and the step fraction from the step start to the next stage.
+_C2 = (0, 1, 1, 2)
+_A_NEXT = (0.5, 0.5, 1.0)  # indexed by stage − 1 (stage 0 is the step start)
+
+
+@njit(cache=True, _nrt=False, forceinline=True)
+def _thrust(R, T, r_p, out):
+    """Generalised force of a push T along the body x axis applied at body point r_p, with the body
+    rotation ``R`` (exact rotation)."""
     f0, f1, f2 = T * R[0, 0], T * R[1, 0], T * R[2, 0]
     rx = R[0, 0] * r_p[0] + R[0, 1] * r_p[1] + R[0, 2] * r_p[2]
     ry = R[1, 0] * r_p[0] + R[1, 1] * r_p[1] + R[1, 2] * r_p[2]
@@ -63,26 +76,29 @@ def _thrust(x, T, r_p, out):
     out[5] += rx * f1 - ry * f0
 
 
-@njit(cache=True)
-def _history(vbuf, head, count, Kh, pairs_i, pairs_j, dt, H0, Hh, H1):
-    """H_c = Σ_m w_m Δt K((n−m+c)Δt) v_m for c = 0, ½, 1 in one pass over the stored velocities.
+@njit(cache=True, _nrt=False, forceinline=True)
+def _history(vbuf, head, count, Kh, pairs_i, pairs_j, dt, H):
+    """H_c = Σ_m w_m Δt K((n−m+c)Δt) v_m for c = 0, ½, 1 (rows of ``H`` (3, 6)) in one pass over the
+    stored velocities.
 
     ``vbuf`` (2 nb, 6) is a mirrored ring buffer (each velocity stored at ``head`` and ``head + nb``),
     so the last ``count`` velocities are contiguous: lag ℓ sits at ``head + nb − ℓ``. ``Kh`` (npairs,
-    nK2) holds K at the half steps k Δt / 2.
+    nK2) holds K at the half steps k Δt / 2, each pair contiguous in time. The three sums of a pair
+    run together over the lags in order: three independent chains at the scalar floating-point rate.
+    (Pairs as the inner, vectorisable loop measured slower for 10 pairs; reordering the sums would
+    change the round-off.)
     """
-    for d in range(6):
-        H0[d] = 0.0
-        Hh[d] = 0.0
-        H1[d] = 0.0
+    for c in range(3):
+        for d in range(6):
+            H[c, d] = 0.0
     if count < 2:  # [0, t_n] is empty at the first step
         return
     nb = vbuf.shape[0] // 2
     nK2 = Kh.shape[1]
     top = head + nb
+    n_lag = min(count, (nK2 - 1) // 2)  # lags whose K(lag + 1) sample exists
     for p in range(pairs_i.shape[0]):
         i, j = pairs_i[p], pairs_j[p]
-        n_lag = min(count, (nK2 - 1) // 2)  # lags whose K(lag + 1) sample exists
         s0 = 0.0
         sh = 0.0
         s1 = 0.0
@@ -103,21 +119,72 @@ def _history(vbuf, head, count, Kh, pairs_i, pairs_j, dt, H0, Hh, H1):
             s0 -= 0.5 * Kh[p, k] * v_old
             sh -= 0.5 * Kh[p, k + 1] * v_old
             s1 -= 0.5 * Kh[p, k + 2] * v_old
-        H0[i] += s0 * dt
-        Hh[i] += sh * dt
-        H1[i] += s1 * dt
+        H[0, i] += s0 * dt
+        H[1, i] += sh * dt
+        H[2, i] += s1 * dt
 
 
 @njit(cache=True)
-def _forces(t_idx, x, v, z, mu_hist, c2, v_n, dt, C, Bv, Bq, F_ext, thrust, r_p,
-            Kh, pairs_i, pairs_j, conv, ss_A, ss_B, ss_C, ss_in, ss_out, ss_pair, dz, F):
-    """All forces but the contacts, into ``F``; the state-space derivative into ``dz``."""
+def _output_order(ss_out):
+    """States by output DOF: column d of the (n_max, 6) result lists, in increasing order, the states
+    whose output is DOF d (−1 pads). Lets :func:`_state_space` run the six output sums side by side."""
+    counts = np.zeros(6, dtype=np.int64)
+    for s in range(ss_out.shape[0]):
+        counts[ss_out[s]] += 1
+    order = np.full((max(counts.max(), 1), 6), -1, dtype=np.int64)
+    counts[:] = 0
+    for s in range(ss_out.shape[0]):
+        d = ss_out[s]
+        order[counts[d], d] = s
+        counts[d] += 1
+    return order
+
+
+@njit(cache=True, _nrt=False, forceinline=True)
+def _minus_output(f, s, ss_C, z):
+    """f − C_s z_s, or f for the padding s = −1 of :func:`_output_order`."""
+    return f - ss_C[s] * z[s] if s >= 0 else f
+
+
+@njit(cache=True, _nrt=False, forceinline=True)
+def _state_space(v, z, ss_A, ss_B, ss_C, ss_in, ss_pair, ss_order, st, kz, F):
+    """Modal state-space memory: derivative into row ``st`` of ``kz`` and the output subtracted from ``F``.
+
+    Block-diagonal realisation: each state couples to itself and at most one partner. Each output DOF
+    subtracts its states in increasing order; the six sums run side by side in registers (``ss_order``
+    from :func:`_output_order`) rather than one long dependent chain after the other.
+    """
+    for s in range(z.shape[0]):
+        acc_z = ss_A[s, 0] * z[s] + ss_B[s] * v[ss_in[s]]
+        q = ss_pair[s]
+        if q >= 0:
+            acc_z += ss_A[s, 1] * z[q]
+        kz[st, s] = acc_z
+    f0, f1, f2, f3, f4, f5 = F[0], F[1], F[2], F[3], F[4], F[5]
+    for r in range(ss_order.shape[0]):
+        f0 = _minus_output(f0, ss_order[r, 0], ss_C, z)
+        f1 = _minus_output(f1, ss_order[r, 1], ss_C, z)
+        f2 = _minus_output(f2, ss_order[r, 2], ss_C, z)
+        f3 = _minus_output(f3, ss_order[r, 3], ss_C, z)
+        f4 = _minus_output(f4, ss_order[r, 4], ss_C, z)
+        f5 = _minus_output(f5, ss_order[r, 5], ss_C, z)
+    F[0], F[1], F[2], F[3], F[4], F[5] = f0, f1, f2, f3, f4, f5
+
+
+@njit(cache=True, _nrt=False, forceinline=True)
+def _forces(t_idx, c2, x, v, z, v_n, R, dt, H, C, Bv, Bq, F_ext, thrust, r_p, conv, memory, st, kz, F):
+    """All forces but the contacts, into ``F``; the state-space derivative into row ``st`` of ``kz``.
+
+    The stage is ``c2`` half steps into the step (0, 1, 2: c = 0, ½, 1), at half-step index ``t_idx``;
+    ``v_n`` is the velocity at the step start, ``H`` (3, 6) the history sums of the step.
+    """
+    Kh, pairs_i, pairs_j, ss_A, ss_B, ss_C, ss_in, ss_order, ss_pair = memory
     for d in range(6):
         F[d] = F_ext[t_idx, d] - Bv[d] * v[d] - Bq[d] * abs(v[d]) * v[d]
         for e in range(6):
             F[d] -= C[d, e] * x[e]
     if thrust[t_idx] != 0.0:
-        _thrust(x, thrust[t_idx], r_p, F)
+        _thrust(R, thrust[t_idx], r_p, F)
     if conv:
         cdt = 0.5 * c2 * dt
         for p in range(pairs_i.shape[0]):
@@ -125,27 +192,30 @@ def _forces(t_idx, x, v, z, mu_hist, c2, v_n, dt, C, Bv, Bq, F_ext, thrust, r_p,
             cur = 0.5 * cdt * (Kh[p, c2] * v_n[j] + Kh[p, 0] * v[j]) if c2 > 0 else 0.0
             F[i] -= cur
         for d in range(6):
-            F[d] -= mu_hist[d]
+            F[d] -= H[c2, d]
     else:
-        # block-diagonal modal realisation: each state couples to itself and at most one partner
-        n_s = z.shape[0]
-        for s in range(n_s):
-            acc_z = ss_A[s, 0] * z[s] + ss_B[s] * v[ss_in[s]]
-            q = ss_pair[s]
-            if q >= 0:
-                acc_z += ss_A[s, 1] * z[q]
-            dz[s] = acc_z
-            F[ss_out[s]] -= ss_C[s] * z[s]
+        _state_space(v, z, ss_A, ss_B, ss_C, ss_in, ss_pair, ss_order, st, kz, F)
 
 
-@njit(cache=True)
-def _stage(t_idx, x, v, z, mu_hist, c2, v_n, dt, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p,
-           Kh, pairs_i, pairs_j, conv, ss_A, ss_B, ss_C, ss_in, ss_out, ss_pair, ct, cs, dz, acc, F, f_t, f_n):
-    """Accelerations ``acc`` and state-space derivative ``dz`` at one RK4 stage (contacts included)."""
-    _forces(t_idx, x, v, z, mu_hist, c2, v_n, dt, C, Bv, Bq, F_ext, thrust, r_p,
-            Kh, pairs_i, pairs_j, conv, ss_A, ss_B, ss_C, ss_in, ss_out, ss_pair, dz, F)
+@njit(cache=True, _nrt=False, forceinline=True)
+def _stage(n, st, x, v, z, v_n, R, dt, H, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, conv, memory, ct, cs, ws,
+           v_tol, kv, kz, scratch, records):
+    """Stage ``st`` (0–3) of step ``n`` at the stage state (x, v, z): accelerations into row ``st`` of
+    ``kv`` (4, 6) and the state-space derivative into row ``st`` of ``kz`` (4, ns), contacts included.
+
+    ``v_n`` is the velocity at the step start, ``R`` the body rotation at the stage state (thrust
+    direction, contact points). The first stage decides the stick–slip modes of the step at the step
+    start (:func:`boatland.contact.fender.decide_modes`) and reuses its last solve when final.
+    ``scratch`` = (acc, F) (6,) each, ``records`` = (f_t, f_n, needed, available) per contact.
+    """
+    c2 = _C2[st]
+    t_idx = 2 * n + c2
     P, S, N, TH, CF, DF, MU, sideways = ct
     mode, fdir, anchor, anchored = cs
+    kin, solve, F_try = ws
+    f_t, f_n, needed, available = records
+    acc, F = scratch
+    _forces(t_idx, c2, x, v, z, v_n, R, dt, H, C, Bv, Bq, F_ext, thrust, r_p, conv, memory, st, kz, F)
     if P.shape[0] == 0:
         for d in range(6):
             a = 0.0
@@ -153,29 +223,63 @@ def _stage(t_idx, x, v, z, mu_hist, c2, v_n, dt, Mt_inv, C, Bv, Bq, F_ext, thrus
                 a += Mt_inv[d, e] * F[e]
             acc[d] = a
     else:
-        contact_forces(x, v, dt, P, S, N, TH, CF, DF, MU, sideways, mode, fdir, anchor, anchored,
-                       Mt_inv, F, acc, f_t, f_n)
+        contact_states(R, x, v, P, S, N, TH, kin)
+        if not (st == 0 and decide_modes(dt, N, TH, CF, DF, MU, sideways, mode, fdir, anchor, anchored, Mt_inv,
+                                         kin, solve, F_try, F, acc, f_t, f_n, needed, available, v_tol)):
+            contact_forces(dt, N, TH, CF, DF, MU, sideways, mode, fdir, anchor, anchored, Mt_inv, kin, solve,
+                           F, acc, f_t, f_n)
+    for d in range(6):
+        kv[st, d] = acc[d]
 
 
-@njit(cache=True)
-def _trial_state(x, v, z, v_stage, kv, kz, h, kx, xs, vs, zs):
-    """RK4 stage update: kx = the stage velocity, then (xs, vs, zs) = (x, v, z) + h (kx, kv, kz).
-    ``v_stage`` may be ``vs`` itself (it is read before being overwritten)."""
+@njit(cache=True, _nrt=False, forceinline=True)
+def _trial_state(st, h, x, v, z, kx, kv, kz, xs, vs, zs):
+    """State (xs, vs, zs) of RK4 stage ``st``: the step start (x, v, z) for st = 0, else
+    (x, v, z) + h (kx, kv, kz)[st − 1] after kx[st − 1] = the previous stage's velocity ``vs``."""
+    if st == 0:
+        for d in range(6):
+            xs[d] = x[d]
+            vs[d] = v[d]
+        for q in range(z.shape[0]):
+            zs[q] = z[q]
+        return
+    k = st - 1
     for d in range(6):
-        kx[d] = v_stage[d]
+        kx[k, d] = vs[d]
     for d in range(6):
-        xs[d] = x[d] + h * kx[d]
-        vs[d] = v[d] + h * kv[d]
+        xs[d] = x[d] + h * kx[k, d]
+        vs[d] = v[d] + h * kv[k, d]
     for q in range(z.shape[0]):
-        zs[q] = z[q] + h * kz[q]
+        zs[q] = z[q] + h * kz[k, q]
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False, forceinline=True)
+def _record(n, x, v, mode, records, tpos, out_x, out_v, out_mode, out_fn, out_ft, out_need, out_avail, out_tpos):
+    """Row ``n`` of the outputs: the state and the contacts at the step start."""
+    f_t, f_n, needed, available = records
+    for d in range(6):
+        out_x[n, d] = x[d]
+        out_v[n, d] = v[d]
+    for c in range(mode.shape[0]):
+        out_mode[n, c] = mode[c]
+        out_fn[n, c] = f_n[c]
+        out_ft[n, c, 0] = f_t[c, 0]
+        out_ft[n, c, 1] = f_t[c, 1]
+        out_need[n, c] = needed[c]
+        out_avail[n, c] = available[c]
+        out_tpos[n, c, 0] = tpos[c, 0]
+        out_tpos[n, c, 1] = tpos[c, 1]
+
+
+@njit(cache=True, nogil=True)
 def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
                 conv, Kh, pairs_i, pairs_j, n_hist, ss_A, ss_B, ss_C, ss_in, ss_out, ss_pair,
                 ct, v_tol, limit_trans, limit_rot, out_x, out_v, out_mode, out_fn, out_ft, out_need,
-                out_avail, out_tpos):
+                out_avail, out_tpos, progress):
     """Integrate the Cummins equation with classic RK4; returns ``(status, last_step)``.
+
+    Runs without the GIL (``nogil``): another thread may poll ``progress`` meanwhile. All buffers are
+    allocated once before the first step.
 
     Parameters
     ----------
@@ -202,8 +306,10 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
         to its 2×2-block partner ``ss_pair`` (ns,) (−1 for a real pole), ``ss_B`` (ns,), ``ss_C``
         (ns,), input DOF ``ss_in`` (ns,), output DOF ``ss_out`` (ns,).
     ct : tuple
-        Contacts ``(P, S, N, TH, CF, DF, MU, sideways)`` as in
-        :func:`boatland.contact.fender.contact_forces` (Nc = 0 for none).
+        Contacts ``(P, S, N, TH, CF, DF, MU, sideways)``: fender points (body), plane points, plane
+        normals, horizontal tangents (Nc, 3) in the local frame, stiffness and damping (Nc,), Stribeck
+        parameters (Nc, 5), friction also sideways — see :mod:`boatland.contact.fender` (Nc = 0 for
+        none).
     v_tol : float
         Speed below which a contact's sliding direction is not defined [m/s].
     limit_trans, limit_rot : float
@@ -215,6 +321,9 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
         friction available μ(|u|) f_n.
     out_ft, out_tpos : (n_steps + 1, Nc, 2)
         Tangential (vertical, horizontal) friction force and fender-point position.
+    progress : (1,) int64
+        Progress counter: set to the number of steps completed at the start of every step, and to
+        ``last`` on return.
 
     Returns
     -------
@@ -225,88 +334,64 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
     """
     P, S, N, TH, CF, DF, MU, sideways = ct
     nc = P.shape[0]
-    mode = np.zeros(nc, dtype=np.int64)
-    fdir = np.zeros((nc, 2))
-    anchor = np.zeros((nc, 2))
-    anchored = np.zeros(nc, dtype=np.bool_)
-    cs = (mode, fdir, anchor, anchored)
-    f_t = np.zeros((nc, 2))
-    f_n = np.zeros(nc)
-    need = np.zeros(nc)
-    avail = np.zeros(nc)
+    cs = (np.zeros(nc, dtype=np.int64), np.zeros((nc, 2)), np.zeros((nc, 2)), np.zeros(nc, dtype=np.bool_))
+    mode, fdir, anchor, anchored = cs
+    ws = contact_workspace(nc, sideways)
+    tpos = ws[0][4]  # tangential positions of the contacts at the stage state (contact_states)
+    records = (np.zeros((nc, 2)), np.zeros(nc), np.zeros(nc), np.zeros(nc))  # f_t, f_n, needed, available
     n_s = ss_B.shape[0]
+    memory = (Kh, pairs_i, pairs_j, ss_A, ss_B, ss_C, ss_in, _output_order(ss_out), ss_pair)
     x = x0.copy()
     v = v0.copy()
     z = np.zeros(n_s)
     nb = max(n_hist + 1, 1)
-    vbuf = np.zeros((2 * nb, 6))  # mirrored ring buffer (see _history)
+    vbuf = np.zeros((2 * nb, 6))  # mirrored ring buffer of the velocities (see _history)
     head = 0
     count = 1
-    vbuf[0, :] = v
-    vbuf[nb, :] = v
-    H0 = np.zeros(6)
-    Hh = np.zeros(6)
-    H1 = np.zeros(6)
-    F = np.zeros(6)
-    k1x, k2x, k3x, k4x = np.empty(6), np.empty(6), np.empty(6), np.empty(6)
-    k1v, k2v, k3v, k4v = np.empty(6), np.empty(6), np.empty(6), np.empty(6)
-    k1z, k2z, k3z, k4z = np.empty(n_s), np.empty(n_s), np.empty(n_s), np.empty(n_s)
-    xs, vs, zs = np.empty(6), np.empty(6), np.empty(n_s)
-    dz0 = np.empty(n_s)
+    for d in range(6):
+        vbuf[0, d] = v[d]
+        vbuf[nb, d] = v[d]
+    H = np.zeros((3, 6))  # history sums at c = 0, ½, 1 (H[0] is the whole integral at t_n)
+    scratch = (np.zeros(6), np.zeros(6))  # acc, F of one stage
+    kx, kv, kz = np.zeros((4, 6)), np.zeros((4, 6)), np.zeros((4, n_s))  # stage derivatives
+    xs, vs, zs = np.zeros(6), np.zeros(6), np.zeros(n_s)  # stage state
     for n in range(n_steps + 1):
+        progress[0] = n
         if conv:
-            # H0 is the whole integral at t_n (the current interval of stage 1 is empty)
-            _history(vbuf, head, count, Kh, pairs_i, pairs_j, dt, H0, Hh, H1)
-        if nc > 0:
-            _forces(2 * n, x, v, z, H0, 0, v, dt, C, Bv, Bq, F_ext, thrust, r_p, Kh, pairs_i, pairs_j,
-                    conv, ss_A, ss_B, ss_C, ss_in, ss_out, ss_pair, dz0, F)
-            decide_modes(x, v, dt, P, S, N, TH, CF, DF, MU, sideways, mode, fdir, anchor, anchored,
-                         Mt_inv, F, need, avail, v_tol)
-        # stage 1 (c = 0) — also the step-start record
-        _stage(2 * n, x, v, z, H0, 0, v, dt, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, Kh, pairs_i, pairs_j,
-               conv, ss_A, ss_B, ss_C, ss_in, ss_out, ss_pair, ct, cs, k1z, k1v, F, f_t, f_n)
-        out_x[n, :] = x
-        out_v[n, :] = v
-        for c in range(nc):
-            out_mode[n, c] = mode[c]
-            out_fn[n, c] = f_n[c]
-            out_ft[n, c, 0] = f_t[c, 0]
-            out_ft[n, c, 1] = f_t[c, 1]
-            out_need[n, c] = need[c]
-            out_avail[n, c] = avail[c]
-            out_tpos[n, c, 0], out_tpos[n, c, 1] = tangential_position(x, P[c], TH[c])
+            _history(vbuf, head, count, Kh, pairs_i, pairs_j, dt, H)
+        for st in range(4):
+            _trial_state(st, _A_NEXT[st - 1] * dt, x, v, z, kx, kv, kz, xs, vs, zs)
+            R = rotation_matrix(xs[3], xs[4], xs[5])  # once per stage: thrust direction, contact points
+            # stage 1 decides the contact modes of the step and is the step-start record
+            _stage(n, st, xs, vs, zs, v, R, dt, H, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, conv, memory, ct, cs, ws,
+                   v_tol, kv, kz, scratch, records)
+            if st == 0:
+                _record(n, x, v, mode, records, tpos, out_x, out_v, out_mode, out_fn, out_ft, out_need,
+                        out_avail, out_tpos)
+                if n == n_steps:
+                    break
         if n == n_steps:
             break
-        _trial_state(x, v, z, v, k1v, k1z, 0.5 * dt, k1x, xs, vs, zs)
-        # stage 2 (c = ½)
-        _stage(2 * n + 1, xs, vs, zs, Hh, 1, v, dt, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, Kh, pairs_i, pairs_j,
-               conv, ss_A, ss_B, ss_C, ss_in, ss_out, ss_pair, ct, cs, k2z, k2v, F, f_t, f_n)
-        _trial_state(x, v, z, vs, k2v, k2z, 0.5 * dt, k2x, xs, vs, zs)
-        # stage 3 (c = ½)
-        _stage(2 * n + 1, xs, vs, zs, Hh, 1, v, dt, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, Kh, pairs_i, pairs_j,
-               conv, ss_A, ss_B, ss_C, ss_in, ss_out, ss_pair, ct, cs, k3z, k3v, F, f_t, f_n)
-        _trial_state(x, v, z, vs, k3v, k3z, dt, k3x, xs, vs, zs)
-        # stage 4 (c = 1)
-        _stage(2 * n + 2, xs, vs, zs, H1, 2, v, dt, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, Kh, pairs_i, pairs_j,
-               conv, ss_A, ss_B, ss_C, ss_in, ss_out, ss_pair, ct, cs, k4z, k4v, F, f_t, f_n)
         for d in range(6):
-            k4x[d] = vs[d]
+            kx[3, d] = vs[d]
         bad = False
         for d in range(6):
-            x[d] += dt / 6.0 * (k1x[d] + 2 * k2x[d] + 2 * k3x[d] + k4x[d])
-            v[d] += dt / 6.0 * (k1v[d] + 2 * k2v[d] + 2 * k3v[d] + k4v[d])
+            x[d] += dt / 6.0 * (kx[0, d] + 2 * kx[1, d] + 2 * kx[2, d] + kx[3, d])
+            v[d] += dt / 6.0 * (kv[0, d] + 2 * kv[1, d] + 2 * kv[2, d] + kv[3, d])
             if not (np.isfinite(x[d]) and np.isfinite(v[d])):
                 bad = True
         for q in range(n_s):
-            z[q] += dt / 6.0 * (k1z[q] + 2 * k2z[q] + 2 * k3z[q] + k4z[q])
+            z[q] += dt / 6.0 * (kz[0, q] + 2 * kz[1, q] + 2 * kz[2, q] + kz[3, q])
         if bad:
             out_x[n + 1, :] = x
             out_v[n + 1, :] = v
+            progress[0] = n + 1
             return STATUS_NAN, n + 1
         for d in range(3):
             if abs(x[d]) > limit_trans or abs(x[d + 3]) > limit_rot:
                 out_x[n + 1, :] = x
                 out_v[n + 1, :] = v
+                progress[0] = n + 1
                 return STATUS_RUNAWAY, n + 1
         # a contact that stuck during this step is anchored where it came to rest
         for c in range(nc):
@@ -316,8 +401,9 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
             elif mode[c] != STICK:
                 anchored[c] = False
         head = (head + 1) % nb
-        vbuf[head, :] = v
-        vbuf[head + nb, :] = v
+        for d in range(6):
+            vbuf[head, d] = v[d]
+            vbuf[head + nb, d] = v[d]
         if count < nb:
             count += 1
     return STATUS_OK, n_steps

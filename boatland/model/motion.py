@@ -38,15 +38,29 @@ class MotionArrays:
         return cls(np.linalg.inv(np.asarray(Mt, dtype=float)), np.asarray(C, dtype=float).copy(), True,
                    np.zeros((0, 1)), e, e, 0, np.zeros((0, 2)), np.zeros(0), np.zeros(0), e, e, e)
 
+    @staticmethod
+    def allocate_outputs(n_steps: int, nc: int) -> dict:
+        """Zeroed output arrays of :meth:`run` for ``n_steps`` steps and ``nc`` contacts."""
+        return {
+            "x": np.zeros((n_steps + 1, 6)), "v": np.zeros((n_steps + 1, 6)),
+            "mode": np.zeros((n_steps + 1, nc), dtype=np.int64), "fn": np.zeros((n_steps + 1, nc)),
+            "ft": np.zeros((n_steps + 1, nc, 2)), "needed": np.zeros((n_steps + 1, nc)),
+            "available": np.zeros((n_steps + 1, nc)), "tpos": np.zeros((n_steps + 1, nc, 2)),
+        }
+
     def run(self, dt: float, n_steps: int, *, F_ext=None, thrust=None, r_p=(0.0, 0.0, 0.0), x0=None, v0=None,
             Bv=None, Bq=None, contacts=None, v_tol: float = 1e-6, limit_trans: float = 1e3,
-            limit_rot: float = 1.0):
+            limit_rot: float = 1.0, progress=None, out=None):
         """Integrate; returns a dict of arrays (t, x, v and, with contacts, mode, fn, ft, needed,
         available, tpos) plus ``status`` and ``message``.
 
         ``F_ext`` (2 n_steps + 1, 6) and ``thrust`` (2 n_steps + 1,) are sampled at half steps;
         ``contacts`` is the tuple ``(P, S, N, TH, CF, DF, MU, sideways)`` of
-        :func:`boatland.contact.fender.contact_forces` in the local frame.
+        :func:`boatland.integrate.run_cummins` in the local frame. ``progress``, an int64 array of shape
+        (1,), receives the number of steps completed while the kernel runs (it releases the GIL, so
+        another thread can poll it for a progress bar). ``out``: preallocated output arrays from
+        :meth:`allocate_outputs` (rows below the progress count are final while the kernel runs — a
+        logger in another thread may read them); by default they are allocated here.
         """
         m = 2 * n_steps + 1
         F_ext = np.zeros((m, 6)) if F_ext is None else np.ascontiguousarray(F_ext, dtype=float)
@@ -57,19 +71,21 @@ class MotionArrays:
         if contacts is None:
             e3 = np.zeros((0, 3))
             contacts = (e3, e3, e3, e3, np.zeros(0), np.zeros(0), np.zeros((0, 5)), True)
+        if progress is None:
+            progress = np.zeros(1, dtype=np.int64)
+        elif not (isinstance(progress, np.ndarray) and progress.dtype == np.int64 and progress.shape == (1,)):
+            raise ValueError("progress must be a numpy int64 array of shape (1,)")
         nc = contacts[0].shape[0]
-        out = {
-            "x": np.zeros((n_steps + 1, 6)), "v": np.zeros((n_steps + 1, 6)),
-            "mode": np.zeros((n_steps + 1, nc), dtype=np.int64), "fn": np.zeros((n_steps + 1, nc)),
-            "ft": np.zeros((n_steps + 1, nc, 2)), "needed": np.zeros((n_steps + 1, nc)),
-            "available": np.zeros((n_steps + 1, nc)), "tpos": np.zeros((n_steps + 1, nc, 2)),
-        }
+        if out is None:
+            out = self.allocate_outputs(n_steps, nc)
+        elif out["x"].shape != (n_steps + 1, 6) or out["mode"].shape != (n_steps + 1, nc):
+            raise ValueError(f"out arrays must be allocate_outputs({n_steps}, {nc})")
         status, last = run_cummins(
             float(dt), int(n_steps), self.Mt_inv, self.C, vec(Bv), vec(Bq), F_ext, thrust,
             np.asarray(r_p, dtype=float), vec(x0), vec(v0), self.conv, self.Kh, self.pairs_i, self.pairs_j,
             self.n_hist, self.ss_A, self.ss_B, self.ss_C, self.ss_in, self.ss_out, self.ss_pair, contacts, float(v_tol),
             float(limit_trans), float(limit_rot), out["x"], out["v"], out["mode"], out["fn"], out["ft"],
-            out["needed"], out["available"], out["tpos"])
+            out["needed"], out["available"], out["tpos"], progress)
         out = {k: a[:last + 1] for k, a in out.items()}
         out["t"] = np.arange(last + 1) * dt
         out["status"], out["message"] = int(status), STATUS_MESSAGES[int(status)]

@@ -10,7 +10,10 @@ the vessel's local frame, and the RK4 Cummins integrator with stick–slip conta
 
 from __future__ import annotations
 
+import threading
 import time
+from collections.abc import Callable, Sequence
+from dataclasses import replace
 
 import numpy as np
 
@@ -23,6 +26,7 @@ from boatland.model.scenario import Scenario
 from boatland.model.hydrodb import HydroDB
 from boatland.trial.events import extract_events, slip_episodes
 from boatland.trial.result import Result
+from boatland.trial.sink import StepBlock, TrialInfo, TrialSink
 
 __all__ = ["simulate", "prepare_memory", "contact_arrays", "thrust_series", "wave_ramp", "wave_start", "BlowUpError"]
 
@@ -100,7 +104,8 @@ def contact_arrays(scenario: Scenario, db: HydroDB):
     return (np.ascontiguousarray(P, dtype=float), S, N, TH, CF, DF, MU, bool(fender.sideways))
 
 
-def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None = None) -> Result:
+def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None = None,
+             progress: Callable[[int, int], None] | None = None, sinks: Sequence[TrialSink] = ()) -> Result:
     r"""Run one landing trial.
 
     Equation of motion (DESIGN.md §1; Cummins 1962, seed 000 eq. 3.40; contact: seed 001 §2.5, §3.4):
@@ -117,6 +122,12 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
         The vessel's database (with a mass matrix).
     memory : RadiationMemory, optional
         Reuse IRFs / state-space fit across trials of a campaign (must match the scenario's settings).
+    progress : callable, optional
+        ``progress(steps_done, n_steps)``, called about ten times a second while the kernel runs (it
+        runs in a worker thread with the GIL released) — e.g. to drive a progress bar.
+    sinks : sequence of TrialSink
+        Receive the trial as it runs, in blocks of about one second of simulated time
+        (:mod:`boatland.trial.sink`): a logger writes while the kernel integrates.
 
     Returns
     -------
@@ -149,27 +160,93 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
     Bv, Bq = scenario.additional_damping(db)
     contacts = contact_arrays(scenario, db)
     r_p = scenario.thrust.position if scenario.thrust is not None else (0.0, 0.0, 0.0)
-    out = arrays.run(dt, n, F_ext=F, thrust=thrust, r_p=r_p, x0=scenario.initial.displacement,
-                     v0=scenario.initial.velocity, Bv=np.diag(Bv), Bq=np.diag(Bq), contacts=contacts,
-                     limit_trans=LIMIT_TRANS, limit_rot=LIMIT_ROT)
-    t = out["t"]
-    k = len(t)
-    events = extract_events(t, out["mode"], out["needed"], out["available"])
-    episodes = slip_episodes(t, out["mode"], out["tpos"])
+    kwargs = dict(F_ext=F, thrust=thrust, r_p=r_p, x0=scenario.initial.displacement, v0=scenario.initial.velocity,
+                  Bv=np.diag(Bv), Bq=np.diag(Bq), contacts=contacts, limit_trans=LIMIT_TRANS, limit_rot=LIMIT_ROT)
     provenance = {
         "boatland": __version__, "scenario": scenario.name, "scenario_sha256": scenario.digest(),
         "database": db.name, "seed": scenario.simulation.seed, "dt": dt, "steps": n,
         "radiation": scenario.radiation.method, "memory": scenario.radiation.memory,
-        "waves_from": wave_start(scenario), "wall_time": time.perf_counter() - wall0,
+        "waves_from": wave_start(scenario),
     }
+    if progress is None and not sinks:
+        out = arrays.run(dt, n, **kwargs)
+    else:
+        info = TrialInfo(scenario=scenario, db=db, dt=dt, n_steps=n, start_pose=(x0g, y0g, psi), contacts=contacts,
+                         waves=waves, provenance=dict(provenance))
+        out = _run_watched(arrays, dt, n, kwargs, progress, sinks, info, F, thrust)
+    t = out["t"]
+    k = len(t)
+    events = extract_events(t, out["mode"], out["needed"], out["available"])
+    episodes = slip_episodes(t, out["mode"], out["tpos"])
+    provenance["wall_time"] = time.perf_counter() - wall0
     result = Result(t=t, x=out["x"], v=out["v"], F_exc=F[0:2 * k:2], thrust=thrust[0:2 * k:2],
                     mode=out["mode"], fn=out["fn"], ft=out["ft"], needed=out["needed"],
                     available=out["available"], tpos=out["tpos"], events=events, episodes=episodes,
                     status=out["status"], message=out["message"], provenance=provenance,
                     incidents=scenario.incidents)
+    for sink in sinks:
+        sink.finish(result)
     if out["status"] != 0:
         raise BlowUpError(result, _likely_cause(scenario, db, dt, result))
     return result
+
+
+def _run_watched(arrays, dt: float, n: int, kwargs: dict, progress, sinks, info: TrialInfo, F, thrust) -> dict:
+    """Run the kernel in a worker thread; meanwhile report its step counter to ``progress`` (about ten
+    times a second) and hand each finished block of about one second of simulated time to the sinks."""
+    counter = np.zeros(1, dtype=np.int64)
+    live = arrays.allocate_outputs(n, kwargs["contacts"][0].shape[0])
+    box: dict = {}
+
+    def work():
+        try:
+            box["out"] = arrays.run(dt, n, progress=counter, out=live, **kwargs)
+        except BaseException as exc:  # handed to the caller's thread below
+            box["error"] = exc
+
+    for sink in sinks:
+        sink.start(info)
+    block = max(1, int(round(1.0 / dt)))
+    sent = 0                       # rows handed to the sinks so far
+    shown = -1.0
+    worker = threading.Thread(target=work, name="boatland-trial", daemon=True)
+    worker.start()
+    while True:
+        alive = worker.is_alive()
+        done = int(counter[0])     # rows below the count are final
+        while sinks and done - sent >= block:
+            _send(sinks, live, F, thrust, dt, sent, sent + block)
+            sent += block
+        if progress is not None and time.perf_counter() - shown >= 0.1:
+            progress(done, n)
+            shown = time.perf_counter()
+        if not alive:
+            break
+        worker.join(0.1 if not sinks else 0.005)
+    if "error" in box:
+        raise box["error"]
+    out = box["out"]
+    rows = len(out["t"])
+    for k0 in range(sent, rows, block):
+        _send(sinks, live, F, thrust, dt, k0, min(k0 + block, rows))
+    if progress is not None:
+        progress(n if out["status"] == 0 else rows - 1, n)
+    return out
+
+
+def _send(sinks, live: dict, F, thrust, dt: float, k0: int, k1: int) -> None:
+    """One block of final rows [k0, k1) with its events to every sink."""
+    lo = max(k0 - 1, 0)
+    t = np.arange(lo, k1) * dt
+    events = [replace(e, step=e.step + lo) for e in extract_events(t, live["mode"][lo:k1], live["needed"][lo:k1],
+                                                                     live["available"][lo:k1])]
+    views = {k: a[k0:k1] for k, a in live.items()}
+    for a in views.values():
+        a.flags.writeable = False
+    blk = StepBlock(k0=k0, k1=k1, t=t[k0 - lo:], F_exc=F[2 * k0:2 * k1:2], thrust=thrust[2 * k0:2 * k1:2],
+                    events=events, **views)
+    for sink in sinks:
+        sink.steps(blk)
 
 
 def _likely_cause(scenario, db, dt, result) -> str:

@@ -50,3 +50,15 @@ def test_blow_up_is_stopped_and_explained(landing):
                       "sea": None})
     with pytest.raises(BlowUpError, match=r"integration stopped at t = .* likely cause: dt = 0.05 s is large"):
         simulate(bad, db)
+
+
+def test_progress_is_reported_up_to_the_last_step(landing):
+    """The kernel runs in a worker thread; the callback sees a non-decreasing step count ending at n."""
+    sc, db = landing
+    sc = sc.replace({"simulation.duration": 60.0})
+    seen = []
+    r = simulate(sc, db, progress=lambda done, total: seen.append((done, total)))
+    n = sc.n_steps(db)
+    assert seen and all(total == n for _, total in seen)
+    assert [d for d, _ in seen] == sorted(d for d, _ in seen) and seen[-1][0] == n
+    assert r.completed and len(r.t) == n + 1

@@ -1,0 +1,94 @@
+"""Where a running trial reports to: the sink interface the recording edge implements.
+
+:func:`boatland.trial.simulate.simulate` runs the kernel in a worker thread (it releases the GIL) and,
+while it runs, hands every finished block of steps to its sinks — so a logger writes the run as it
+goes (a killed run keeps what was written) and its cost overlaps the integration on another core.
+
+A sink gets, in order: :meth:`TrialSink.start` once with :class:`TrialInfo`; :meth:`TrialSink.steps`
+with consecutive :class:`StepBlock` s covering every step (about one second of simulated time each,
+the last one shorter); :meth:`TrialSink.finish` once with the :class:`~boatland.trial.result.Result`
+(also when the integration stopped early: ``result.status != 0``). If the trial fails before the
+kernel starts, nothing is called; if a sink raises, the trial stops with that error.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Protocol, runtime_checkable
+
+import numpy as np
+
+from boatland.model.hydrodb import HydroDB
+from boatland.model.scenario import Scenario
+from boatland.trial.events import Event
+
+__all__ = ["TrialInfo", "StepBlock", "TrialSink"]
+
+
+@dataclass(frozen=True, eq=False)
+class TrialInfo:
+    """What a sink needs before the first step.
+
+    Attributes
+    ----------
+    scenario : Scenario
+    db : HydroDB
+    dt : float
+        Time step [s]; ``n_steps`` steps, rows 0 … n_steps.
+    n_steps : int
+    start_pose : (x0, y0, psi)
+        Global position [m] of the reference point at rest and the heading [rad]: the local frame of
+        the arrays (x, tpos) is this pose's (DESIGN.md §2).
+    contacts : tuple
+        ``(P, S, N, TH, CF, DF, MU, sideways)`` in the local frame (body points, plane points, normals,
+        horizontal tangents, ...), as the kernel gets them.
+    waves : object or None
+        The scenario's wave model (``scenario.wave_model(db)``) — e.g. for the elevation at the bow.
+    provenance : dict
+        boatland version, scenario name and hash, seed, dt, radiation method, ...
+    """
+
+    scenario: Scenario
+    db: HydroDB
+    dt: float
+    n_steps: int
+    start_pose: tuple
+    contacts: tuple
+    waves: object
+    provenance: dict = field(default_factory=dict)
+
+
+@dataclass(frozen=True, eq=False)
+class StepBlock:
+    """Rows ``k0`` … ``k1 − 1`` of the trial, final. Arrays are read-only views (do not keep them past
+    the call if you need them later — copy); shapes as in :class:`~boatland.trial.result.Result`.
+
+    ``events`` are the contact events whose step lies in this block (state changes from the row
+    before ``k0``), in time order.
+    """
+
+    k0: int
+    k1: int
+    t: np.ndarray
+    x: np.ndarray
+    v: np.ndarray
+    F_exc: np.ndarray
+    thrust: np.ndarray
+    mode: np.ndarray
+    fn: np.ndarray
+    ft: np.ndarray
+    needed: np.ndarray
+    available: np.ndarray
+    tpos: np.ndarray
+    events: list[Event] = field(default_factory=list)
+
+
+@runtime_checkable
+class TrialSink(Protocol):
+    """Receives a trial as it runs (see the module docstring for the call order)."""
+
+    def start(self, info: TrialInfo) -> None: ...
+
+    def steps(self, block: StepBlock) -> None: ...
+
+    def finish(self, result) -> None: ...
