@@ -1,13 +1,22 @@
-"""Frequency-domain services: RAOs of the free vessel and of the vessel hinged at its fender point.
+"""Frequency-domain services: RAOs of the free vessel and of the vessel hinged at its fender point,
+Wu (2014) slip screening (seed 002 §3.2.1, §3.4: slip margins, Rayleigh / Rice statistics, limiting
+Hs) and operability over a scatter diagram.
 
-Service layer (DESIGN.md §3): built on the hydrodynamic database of :mod:`boatland.model`; the
-screening tools of Wu (2014) / seed 002 §3.2.1 (slip margins, Rayleigh peaks, limiting Hs) will join
-them here.
+Service layer (DESIGN.md §3): built on the hydrodynamic database and the scenario of :mod:`boatland.model`.
 """
 
 from boatland.freqdomain.harmonic import first_harmonic
+from boatland.freqdomain.operability import Availability, ScatterTable, availability, read_scatter
 from boatland.freqdomain.rao import (HingedResponse, excitation_force, free_rao, hinged_rao, impedance,
                                      point_map, preload_stiffness, radiation_coefficients)
+from boatland.freqdomain.screening import (ACCEPT_PRESETS, ACCESS_DURATION, MODES, LandingSetup, LimitTable,
+                                           SeaResponse, SlipTransfer, accept_probability, incident_probability,
+                                           limiting_hs, rayleigh_exceedance, rice_rate, screening_grid,
+                                           sea_response, slip_transfer, spectral_moments, vanmarcke_rate)
 
-__all__ = ["HingedResponse", "excitation_force", "first_harmonic", "free_rao", "hinged_rao", "impedance",
-           "point_map", "preload_stiffness", "radiation_coefficients"]
+__all__ = ["ACCEPT_PRESETS", "ACCESS_DURATION", "MODES", "Availability", "HingedResponse", "LandingSetup",
+           "LimitTable", "ScatterTable", "SeaResponse", "SlipTransfer", "accept_probability", "availability",
+           "excitation_force", "first_harmonic", "free_rao", "hinged_rao", "impedance", "incident_probability",
+           "limiting_hs", "point_map", "preload_stiffness", "radiation_coefficients", "rayleigh_exceedance",
+           "read_scatter", "rice_rate", "screening_grid", "sea_response", "slip_transfer", "spectral_moments",
+           "vanmarcke_rate"]

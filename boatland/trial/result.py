@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import json
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 from pathlib import Path
 
 import numpy as np
@@ -14,12 +14,13 @@ from boatland.conventions import DOF_NAMES, DOF_UNITS
 from boatland.model.scenario_parts import Incidents
 from boatland.trial.events import Event, SlipEpisode, first_exceedance, landing_offset
 
-__all__ = ["Result"]
+__all__ = ["Result", "TrialSeries", "SERIES"]
 
 
 @dataclass(frozen=True, eq=False)
-class Result:
-    """One trial. Arrays are indexed by step (``t``), contacts by their order in the scenario.
+class TrialSeries:
+    """The time series of a trial (or of a block of its steps). Arrays are indexed by step (``t``),
+    contacts by their order in the scenario.
 
     Attributes
     ----------
@@ -37,15 +38,6 @@ class Result:
         Normal force [N]; ``ft`` (n, Nc, 2) friction (vertical, horizontal) [N]; ``needed`` the stick
         force that would hold the contact, ``available`` μ(|u|) f_n [N]; ``tpos`` (n, Nc, 2) the
         fender point in the contact plane [m].
-    events, episodes : list
-        :class:`~boatland.trial.events.Event` and :class:`~boatland.trial.events.SlipEpisode`.
-    status, message : int, str
-        0 = completed; otherwise why the integration stopped (NaN, runaway) — the arrays then end there.
-    provenance : dict
-        boatland version, scenario name and hash, seed, dt, radiation method.
-    incidents : Incidents
-        Thresholds of the incident definitions (slip distances [m], roll limits [deg]); loss of
-        contact is always reported.
     """
 
     t: np.ndarray
@@ -59,6 +51,29 @@ class Result:
     needed: np.ndarray
     available: np.ndarray
     tpos: np.ndarray
+
+
+#: Names of the arrays of :class:`TrialSeries`, in order.
+SERIES = tuple(f.name for f in fields(TrialSeries))
+
+
+@dataclass(frozen=True, eq=False)
+class Result(TrialSeries):
+    """One trial: its :class:`TrialSeries` and what was found in it.
+
+    Attributes
+    ----------
+    events, episodes : list
+        :class:`~boatland.trial.events.Event` and :class:`~boatland.trial.events.SlipEpisode`.
+    status, message : int, str
+        0 = completed; otherwise why the integration stopped (NaN, runaway) — the arrays then end there.
+    provenance : dict
+        boatland version, scenario name and hash, seed, dt, radiation method.
+    incidents : Incidents
+        Thresholds of the incident definitions (slip distances [m], roll limits [deg]); loss of
+        contact is always reported.
+    """
+
     events: list[Event] = field(default_factory=list)
     episodes: list[SlipEpisode] = field(default_factory=list)
     status: int = 0
@@ -154,7 +169,7 @@ class Result:
             with h5py.File(tmp, "w") as f:
                 f.attrs["boatland_version"] = __version__
                 f.attrs["summary"] = json.dumps(self.summary())
-                for name in ("t", "x", "v", "F_exc", "thrust", "mode", "fn", "ft", "needed", "available", "tpos"):
+                for name in SERIES:
                     f.create_dataset(name, data=getattr(self, name), compression="gzip", shuffle=True)
                 f["x"].attrs["columns"] = ",".join(DOF_NAMES)
                 ev = np.array([(e.t, e.contact, e.kind.encode(), e.needed, e.available) for e in self.events],

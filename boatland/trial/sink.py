@@ -16,11 +16,10 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Protocol, runtime_checkable
 
-import numpy as np
-
 from boatland.model.hydrodb import HydroDB
 from boatland.model.scenario import Scenario
 from boatland.trial.events import Event
+from boatland.trial.result import TrialSeries
 
 __all__ = ["TrialInfo", "StepBlock", "TrialSink"]
 
@@ -59,27 +58,16 @@ class TrialInfo:
 
 
 @dataclass(frozen=True, eq=False)
-class StepBlock:
-    """Rows ``k0`` … ``k1 − 1`` of the trial, final. Arrays are read-only views (do not keep them past
-    the call if you need them later — copy); shapes as in :class:`~boatland.trial.result.Result`.
+class StepBlock(TrialSeries):
+    """Rows ``k0`` … ``k1 − 1`` of the trial, final: a :class:`~boatland.trial.result.TrialSeries` of
+    read-only views (copy what you keep past the call).
 
     ``events`` are the contact events whose step lies in this block (state changes from the row
     before ``k0``), in time order.
     """
 
-    k0: int
-    k1: int
-    t: np.ndarray
-    x: np.ndarray
-    v: np.ndarray
-    F_exc: np.ndarray
-    thrust: np.ndarray
-    mode: np.ndarray
-    fn: np.ndarray
-    ft: np.ndarray
-    needed: np.ndarray
-    available: np.ndarray
-    tpos: np.ndarray
+    k0: int = 0
+    k1: int = 0
     events: list[Event] = field(default_factory=list)
 
 

@@ -5,6 +5,8 @@ Modules: :mod:`~boatland.waves.dispersion` (ω² = g k tanh kh, TMA depth factor
 :mod:`~boatland.waves.spectra` (JONSWAP, PM, TMA, cos-2s spreading),
 :mod:`~boatland.waves.realisation` (seeded components), :mod:`~boatland.waves.measured` (gauge
 records), :mod:`~boatland.waves.synthesis` (elevation, fast harmonic sums),
-:mod:`~boatland.waves.excitation` (F_exc(t) through X(ω, β)). The validated model objects that
-compile into these arrays are in :mod:`boatland.model.seastate`.
+:mod:`~boatland.waves.excitation` (F_exc(t) through X(ω, β)),
+:mod:`~boatland.waves.diffraction` (MacCamy–Fuchs field around the monopile). The validated model
+objects that compile into these arrays are in :mod:`boatland.model.seastate` (and
+:mod:`boatland.model.pile_diffraction` for the pile's scattered wave on the hull).
 """

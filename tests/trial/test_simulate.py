@@ -3,14 +3,7 @@
 import numpy as np
 import pytest
 
-from boatland.scenario_check import default_scenario_path, load_checked
 from boatland.trial.simulate import BlowUpError, simulate
-
-
-@pytest.fixture(scope="module")
-def landing():
-    scenario, db, _ = load_checked(default_scenario_path())
-    return scenario, db
 
 
 def test_calm_water_holds_the_thrust_symmetrically(landing):

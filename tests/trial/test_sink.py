@@ -3,7 +3,6 @@
 import numpy as np
 import pytest
 
-from boatland.scenario_check import default_scenario_path, load_checked
 from boatland.trial.sink import TrialSink
 from boatland.trial.simulate import BlowUpError, simulate
 
@@ -24,12 +23,6 @@ class Collector:
     def finish(self, result):
         self.calls.append("finish")
         self.result = result
-
-
-@pytest.fixture(scope="module")
-def landing():
-    scenario, db, _ = load_checked(default_scenario_path())
-    return scenario, db
 
 
 def test_blocks_cover_every_step_and_equal_the_result(landing):

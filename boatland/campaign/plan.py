@@ -1,0 +1,222 @@
+"""A campaign: a base scenario, axes to sweep, N seeds per case — parsed from TOML into a plan of trials.
+
+File format (``scenarios/campaigns/*.toml``)::
+
+    name = "demo"
+    scenario = "../ctv_landing.toml"     # the base scenario, relative to this file
+    seeds = 8                            # trials per case (wave seeds)
+    master_seed = 20261122               # every trial's seed derives from it (SeedSequence)
+    duration = 600.0                     # [s] the access: simulation.duration of every trial
+
+    [set]                                # fixed changes to the base scenario (key paths)
+    "radiation.method" = "state_space"
+
+    [axes]                               # swept keys (any scenario key path) → values; the cases
+    "sea.Hs" = [0.5, 1.0, 1.5]           # are their Cartesian product, in file order
+    "sea.relative_direction_deg" = [180.0, 135.0]
+
+    [incidents]                          # incident definitions (seed 002 §3.3, §4.2)
+    slip_distance = [0.1]                # [m] from the landing position
+    roll_limit_deg = [10.0]
+
+    [store]
+    keep_series = [0]                    # trial numbers whose full time series are stored
+
+Seeds (DESIGN.md §2): trial ``k`` of every case uses the wave seed
+``SeedSequence(master_seed, spawn_key=(k,))`` — the same realisation family across cases (common
+random numbers: trends along an axis are not blurred by different seeds), and independent of the
+order, the worker count and the executor that runs the trials.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import itertools
+import json
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from boatland.model.scenario import Scenario
+from boatland.model.tomlspec import Key, Problems, SpecError, Table, Vector, parse_toml_file, validate
+
+__all__ = ["Campaign", "Case", "TrialSpec", "load_campaign", "trial_seed", "CAMPAIGN_SCHEMA"]
+
+CAMPAIGN_SCHEMA = Table({
+    "name": Key(str, required=True, doc="campaign name"),
+    "description": Key(str, default="", doc="one line shown in reports"),
+    "scenario": Key(str, required=True, doc="base scenario file, relative to the campaign file"),
+    "seeds": Key(int, required=True, ge=1, le=100000, doc="trials (wave seeds) per case"),
+    "master_seed": Key(int, default=0, ge=0, doc="master seed of every trial's wave seed"),
+    "duration": Key((int, float), gt=0.0, doc="[s] access duration (simulation.duration of every trial)"),
+    "set": Table({}, optional=True, doc="fixed changes to the base scenario: key path → value"),
+    "axes": Table({}, optional=True, doc="swept key paths → lists of values"),
+    "incidents": Table({
+        "slip_distance": Vector(scalar=True, gt=0.0, doc="[m] slip incident thresholds (distance from the landing position)"),
+        "roll_limit_deg": Vector(scalar=True, gt=0.0, doc="[deg] roll incident limits"),
+    }, optional=True),
+    "store": Table({
+        "keep_series": Vector(scalar=True, ge=0.0, doc="trial numbers whose full time series are stored"),
+    }, optional=True),
+})
+
+
+def trial_seed(master_seed: int, seed_index: int) -> int:
+    """Wave seed of the ``seed_index``-th trial of every case: 63 bits of
+    ``SeedSequence(master_seed, spawn_key=(seed_index,))``."""
+    state = np.random.SeedSequence(master_seed, spawn_key=(seed_index,)).generate_state(2, dtype=np.uint32)
+    return int((int(state[0]) << 31) ^ int(state[1]))
+
+
+@dataclass(frozen=True)
+class Case:
+    """One point of the sweep: ``values`` maps each axis key path to its value here."""
+
+    index: int
+    values: dict
+
+    def label(self) -> str:
+        return ", ".join(f"{k}={v:g}" if isinstance(v, (int, float)) else f"{k}={v}" for k, v in self.values.items())
+
+
+@dataclass(frozen=True)
+class TrialSpec:
+    """One trial: ``trial`` = case × seeds + seed_index (its row in the store)."""
+
+    trial: int
+    case: int
+    seed_index: int
+    seed: int
+
+
+@dataclass(frozen=True, eq=False)
+class Campaign:
+    """A validated campaign (see the module docstring).
+
+    Attributes
+    ----------
+    name, description, source : str
+    scenario_path : Path
+        The base scenario file.
+    base : Scenario
+        The base scenario with ``[set]``, ``duration`` and ``[incidents]`` applied.
+    axes : dict[str, list]
+    seeds, master_seed : int
+    keep_series : tuple of int
+    document : dict
+        The campaign file as parsed (its digest identifies the campaign in a store).
+    """
+
+    name: str
+    description: str
+    source: str
+    scenario_path: Path
+    base: Scenario
+    axes: dict
+    seeds: int
+    master_seed: int
+    keep_series: tuple
+    document: dict
+
+    @property
+    def cases(self) -> list[Case]:
+        keys = list(self.axes)
+        return [Case(i, dict(zip(keys, combo)))
+                for i, combo in enumerate(itertools.product(*(self.axes[k] for k in keys)))]
+
+    @property
+    def n_trials(self) -> int:
+        return len(self.cases) * self.seeds
+
+    def trials(self) -> list[TrialSpec]:
+        return [TrialSpec(c * self.seeds + k, c, k, trial_seed(self.master_seed, k))
+                for c in range(len(self.cases)) for k in range(self.seeds)]
+
+    def scenario_for(self, spec: TrialSpec) -> Scenario:
+        """The trial's scenario: the base with its case's axis values and its seed."""
+        changes = dict(self.cases[spec.case].values)
+        changes["simulation.seed"] = spec.seed
+        return self.base.replace(changes)
+
+    def digest(self) -> str:
+        """SHA-256 of the campaign file's content and of the base scenario's (what a store belongs to)."""
+        text = json.dumps(self.document, sort_keys=True, default=str)
+        return hashlib.sha256(f"{text}\n{self.base.digest()}".encode()).hexdigest()
+
+
+def load_campaign(path: str | Path, *, load_scenario) -> Campaign:
+    """Read and validate a campaign file; every problem at once, with key paths.
+
+    Parameters
+    ----------
+    path : str or Path
+    load_scenario : callable
+        ``load_scenario(path) -> Scenario`` for the base scenario (the edge passes its loader, which
+        knows the built-in databases).
+
+    Raises
+    ------
+    SpecError
+        Unknown keys (with a "did you mean"), wrong types, empty axes, an axis or ``[set]`` key that
+        is not a scenario key or a value the scenario rejects — each named by its key path.
+    """
+    path = Path(path)
+    problems = Problems(path)
+    doc = parse_toml_file(path)
+    raw_set, raw_axes = doc.get("set", {}), doc.get("axes", {})
+    data = validate({k: v for k, v in doc.items() if k not in ("set", "axes")}, CAMPAIGN_SCHEMA, problems)
+    for name, table in (("set", raw_set), ("axes", raw_axes)):
+        if not isinstance(table, dict):
+            problems.add(name, f"must be a table of key paths, got {type(table).__name__}")
+    problems.raise_if_any()
+    base_path = (path.parent / data["scenario"]).resolve()
+    if not base_path.is_file():
+        raise SpecError(str(path), [("scenario", f"no such file: {base_path}")])
+    try:
+        scenario = load_scenario(base_path)
+    except SpecError as exc:
+        raise SpecError(str(path), [("scenario", f"the base scenario has problems:\n{exc}")]) from None
+    changes: dict[str, Any] = dict(raw_set)
+    if "duration" in data:
+        changes["simulation.duration"] = float(data["duration"])
+    inc = data.get("incidents") or {}
+    for key in ("slip_distance", "roll_limit_deg"):
+        if key in inc:
+            changes[f"incidents.{key}"] = [float(v) for v in np.atleast_1d(inc[key])]
+    base = _apply(scenario, changes, problems, "set")
+    axes: dict[str, list] = {}
+    for key, values in raw_axes.items():
+        if not isinstance(values, list) or not values:
+            problems.add(f"axes.{key}", "must be a non-empty list of values")
+            continue
+        if key == "simulation.seed":
+            problems.add(f"axes.{key}", "seeds come from 'seeds' and 'master_seed', not from an axis")
+            continue
+        for v in values:  # every value must make a valid scenario
+            if _apply(base, {key: v}, problems, f"axes.{key}") is None:
+                break
+        axes[key] = list(values)
+    problems.raise_if_any()
+    keep = tuple(int(v) for v in np.atleast_1d((data.get("store") or {}).get("keep_series", [])))
+    n_trials = int(np.prod([len(v) for v in axes.values()])) * int(data["seeds"])
+    bad = [k for k in keep if k >= n_trials]
+    if bad:
+        raise SpecError(str(path), [("store.keep_series", f"trial numbers {bad} do not exist (0 … {n_trials - 1})")])
+    return Campaign(name=data["name"], description=data.get("description", ""), source=str(path),
+                    scenario_path=base_path, base=base, axes=axes, seeds=int(data["seeds"]),
+                    master_seed=int(data.get("master_seed", 0)), keep_series=keep, document=doc)
+
+
+def _apply(scenario: Scenario, changes: dict, problems: Problems, where: str) -> Scenario | None:
+    if not changes:
+        return scenario
+    try:
+        return scenario.replace(changes)
+    except SpecError as exc:
+        for key, msg in exc.problems:  # name the campaign's key: axes.<path>, or set.<path> for [set]
+            problems.add(where if where.startswith("axes.") or not key else f"{where}.{key}", msg)
+    except (KeyError, ValueError, TypeError, IndexError) as exc:
+        problems.add(where, f"{exc}")
+    return None

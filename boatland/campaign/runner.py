@@ -1,0 +1,251 @@
+"""Run a campaign: every trial of the plan on local processes or a Dask cluster, into a resumable store.
+
+Each trial is one :func:`boatland.trial.simulate.simulate` of the case's scenario with its seed; its
+summary row goes to the :class:`~boatland.campaign.store.CampaignStore` as soon as it arrives. Trials
+already in the store are skipped (resume). A failing trial is recorded with its message and never
+stops the batch. Results do not depend on the executor, the number of workers or the order of
+completion: each trial's inputs come only from the plan (seeds: :func:`boatland.campaign.plan.trial_seed`),
+and rows are stored by trial number.
+
+Executors: ``"local"`` — a pool of worker processes (default: one per core; one worker runs in
+this process); ``"dask"`` — a ``distributed`` scheduler at ``scheduler`` (``tcp://host:port``).
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import time
+import traceback
+import warnings
+from pathlib import Path
+
+import numpy as np
+
+from boatland import __version__
+from boatland.campaign.plan import Campaign, TrialSpec, load_campaign
+from boatland.campaign.stats import clopper_pearson, exponential_mean_interval
+from boatland.campaign.store import INCIDENT_PREFIX, CampaignStore
+from boatland.errors import BoatlandInputError
+
+__all__ = ["run_campaign", "execute_trial", "incident_names", "case_statistics"]
+
+_CACHE: dict = {}   # per worker process: campaign, databases and radiation memories
+
+
+def incident_names(campaign: Campaign) -> list[str]:
+    """Incident definitions of the campaign: first slip, each slip distance, each roll limit, contact loss."""
+    inc = campaign.base.incidents
+    names = ["first slip"]
+    names += [f"slip > {d:g} m" for d in (inc.slip_distance if inc else (0.1,))]
+    names += [f"roll > {r:g}°" for r in (inc.roll_limit_deg if inc else ())]
+    if campaign.base.fender is not None:
+        names.append("contact loss")
+    return names
+
+
+def _context(source: str, loaders):
+    load_scenario, load_database = loaders
+    key = (source, loaders)
+    if key not in _CACHE:
+        campaign = load_campaign(source, load_scenario=load_scenario)
+        _CACHE.clear()
+        _CACHE[key] = {"campaign": campaign, "db": {}, "memory": {}}
+    return _CACHE[key]
+
+
+def execute_trial(source: str, spec: TrialSpec, loaders, keep_dir: str | None = None) -> dict:
+    """Run one trial of the campaign file ``source`` and return its summary row (never raises for a
+    failing trial: the row carries status −1 and the error)."""
+    from boatland.trial.simulate import BlowUpError, prepare_memory, simulate, wave_start
+
+    wall0 = time.perf_counter()
+    row = {"trial": spec.trial, "case": spec.case, "seed_index": spec.seed_index, "seed": spec.seed}
+    try:
+        ctx = _context(source, loaders)
+        campaign: Campaign = ctx["campaign"]
+        names = incident_names(campaign)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            scenario = campaign.scenario_for(spec)
+            dbkey = str(scenario.vessel.database_path or scenario.vessel.database)
+            if dbkey not in ctx["db"]:
+                ctx["db"][dbkey] = loaders[1](scenario)
+            db = ctx["db"][dbkey]
+            rad = scenario.radiation
+            mkey = (dbkey, rad.method, rad.memory, rad.tail, rad.taper)
+            if mkey not in ctx["memory"]:
+                ctx["memory"][mkey] = prepare_memory(scenario, db)
+            try:
+                result = simulate(scenario, db, memory=ctx["memory"][mkey])
+            except BlowUpError as exc:
+                result = exc.result
+        t0 = wave_start(scenario)
+        row.update(_summary_row(result, t0, scenario.simulation.duration, names))
+        if keep_dir is not None and spec.trial in campaign.keep_series:
+            Path(keep_dir).mkdir(parents=True, exist_ok=True)
+            result.to_hdf5(Path(keep_dir) / f"trial_{spec.trial:06d}.h5")
+    except Exception as exc:  # a failing trial is recorded, never aborts the campaign
+        last = traceback.extract_tb(exc.__traceback__)[-1] if exc.__traceback__ else None
+        where = f" ({Path(last.filename).name}:{last.lineno})" if last else ""
+        row.update({"status": -1, "message": f"{type(exc).__name__}: {exc}{where}"[:200]})
+    row["wall_time"] = time.perf_counter() - wall0
+    return row
+
+
+def _summary_row(result, t0: float, duration: float, names: list[str]) -> dict:
+    s = result.summary()
+    nan = math.nan
+    rel = lambda t: nan if t is None else max(0.0, float(t) - t0)  # noqa: E731
+    row = {
+        "status": int(result.status), "message": result.message[:200],
+        "exposure": max(0.0, float(result.t[-1]) - t0),
+        "time_to_first_slip": rel(s["time_to_first_slip"]),
+        "slip_events": int(s["slip_events"]),
+        "max_slip_distance": float(s["max_slip_distance"]), "max_single_slide": float(s["max_single_slide"]),
+        "max_normal_force": nan if s["max_normal_force"] is None else float(s["max_normal_force"]),
+        "min_normal_force": nan if s["min_normal_force_in_contact"] is None else float(s["min_normal_force_in_contact"]),
+        "max_roll_deg": float(np.degrees(np.max(np.abs(result.x[:, 3])))),
+        "max_pitch_deg": float(np.degrees(np.max(np.abs(result.x[:, 4])))),
+        "contact_fraction": float(s["contact_fraction"]),
+    }
+    inc = s["incidents"]
+    for name in names:
+        t = row["time_to_first_slip"] if name == "first slip" else rel(inc.get(name))
+        row[INCIDENT_PREFIX + name] = t
+    return row
+
+
+def run_campaign(campaign: Campaign, store_path: str | Path, *, loaders, executor: str = "local",
+                 workers: int | None = None, scheduler: str | None = None, progress=None,
+                 connect_timeout: float = 10.0) -> CampaignStore:
+    """Run every trial of ``campaign`` not yet in the store at ``store_path``.
+
+    Parameters
+    ----------
+    campaign : Campaign
+    store_path : path
+        The HDF5 store (created, or resumed when it holds this campaign's trials).
+    loaders : (callable, callable)
+        ``(load_scenario(path) -> Scenario, load_database(scenario) -> HydroDB)``: top-level functions
+        (they are sent to worker processes); the edge passes its file loaders.
+    executor : {"local", "dask"}
+    workers : int, optional
+        Local worker processes (default: all cores).
+    scheduler : str, optional
+        Address of a Dask scheduler (``tcp://host:port``) for ``executor="dask"``.
+    progress : callable, optional
+        ``progress(done, total)`` after each trial.
+
+    Returns
+    -------
+    CampaignStore
+        Finished: every row and the per-case statistics written.
+    """
+    names = incident_names(campaign)
+    header = {
+        "campaign": campaign.name, "campaign_digest": campaign.digest(),
+        "campaign_file": Path(campaign.source).read_text(encoding="utf-8"),
+        "plan": _plan_json(campaign), "n_trials": campaign.n_trials, "incidents": "\n".join(names),
+    }
+    store = CampaignStore.open(store_path, header, names)
+    todo = [s for s in campaign.trials() if s.trial not in store.done()]
+    total = campaign.n_trials
+    if progress:
+        progress(total - len(todo), total)
+    keep = str(store.series_dir) if campaign.keep_series else None
+    args = (str(Path(campaign.source).resolve()), loaders, keep)
+    for row in _execute(todo, args, executor, workers, scheduler, connect_timeout):
+        store.add(row)
+        if progress:
+            progress(len(store.rows), total)
+    store.finish(case_statistics(campaign, store.table(), names))
+    return store
+
+
+def _execute(todo, args, executor, workers, scheduler, connect_timeout):
+    source, loaders, keep = args
+    if not todo:
+        return
+    if executor == "dask":
+        yield from _execute_dask(todo, args, scheduler, connect_timeout)
+        return
+    if executor != "local":
+        raise BoatlandInputError(f"executor must be 'local' or 'dask', got {executor!r}")
+    n = workers or os.cpu_count() or 1
+    if n == 1:
+        for spec in todo:
+            yield execute_trial(source, spec, loaders, keep)
+        return
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor, as_completed
+
+    # fork where there is one (Linux): no re-import per worker and no `if __name__ == "__main__"`
+    # guard needed in a user's script; the workers inherit the compiled kernels' cache state
+    method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
+    with ProcessPoolExecutor(max_workers=n, mp_context=multiprocessing.get_context(method)) as pool:
+        futures = [pool.submit(execute_trial, source, spec, loaders, keep) for spec in todo]
+        for fut in as_completed(futures):
+            yield fut.result()
+
+
+def _execute_dask(todo, args, scheduler, connect_timeout):
+    source, loaders, keep = args
+    if not scheduler:
+        raise BoatlandInputError("the Dask executor needs a scheduler address (--scheduler tcp://host:port)")
+    try:
+        from distributed import Client, as_completed
+    except ImportError:
+        raise BoatlandInputError("the Dask executor needs dask.distributed: pip install 'dask[distributed]'") from None
+    try:
+        client = Client(scheduler, timeout=connect_timeout, set_as_default=False)
+    except (OSError, TimeoutError) as exc:
+        raise BoatlandInputError(f"--scheduler {scheduler}: no Dask scheduler answered within "
+                                 f"{connect_timeout:g} s ({type(exc).__name__}); is it running?") from None
+    try:
+        futures = client.map(execute_trial, [source] * len(todo), todo, [loaders] * len(todo),
+                             [keep] * len(todo), pure=False)
+        for fut in as_completed(futures, loop=client.loop):
+            yield fut.result()
+    finally:
+        client.close()
+
+
+def _plan_json(campaign: Campaign) -> str:
+    import json
+
+    return json.dumps({"name": campaign.name, "scenario": str(campaign.scenario_path), "seeds": campaign.seeds,
+                       "master_seed": campaign.master_seed, "axes": campaign.axes,
+                       "cases": [c.values for c in campaign.cases], "boatland": __version__}, default=str)
+
+
+def case_statistics(campaign: Campaign, table: np.ndarray, names: list[str], confidence: float = 0.95) -> np.ndarray:
+    """Per case and incident definition: P(incident within the access) with its Clopper–Pearson
+    interval and the mean time to the incident with its exponential (χ²) interval; failed trials
+    (status −1) are left out and counted."""
+    cases = campaign.cases
+    fields = [("case", "i8"), ("label", "S200"), ("trials", "i8"), ("failed", "i8")]
+    for c in campaign.axes:
+        fields.append((f"axis: {c}", "f8"))
+    for n in names:
+        fields += [(f"{n}: count", "i8"), (f"{n}: P", "f8"), (f"{n}: P lo", "f8"), (f"{n}: P hi", "f8"),
+                   (f"{n}: mean time", "f8"), (f"{n}: mean lo", "f8"), (f"{n}: mean hi", "f8")]
+    out = np.zeros(len(cases), dtype=fields)
+    for i, case in enumerate(cases):
+        rows = table[table["case"] == case.index] if table.size else table
+        ok = rows[rows["status"] >= 0] if rows.size else rows
+        out[i]["case"] = case.index
+        out[i]["label"] = case.label().encode()[:200]
+        out[i]["trials"] = len(rows)
+        out[i]["failed"] = len(rows) - len(ok)
+        for c, v in case.values.items():
+            out[i][f"axis: {c}"] = float(v) if isinstance(v, (int, float)) else math.nan
+        for n in names:
+            t = ok[INCIDENT_PREFIX + n] if ok.size else np.zeros(0)
+            hit = np.isfinite(t)
+            p, lo, hi = clopper_pearson(int(hit.sum()), len(t), confidence)
+            m, mlo, mhi = exponential_mean_interval(t, ok["exposure"] if ok.size else 0.0, confidence)
+            out[i][f"{n}: count"] = int(hit.sum())
+            out[i][f"{n}: P"], out[i][f"{n}: P lo"], out[i][f"{n}: P hi"] = p, lo, hi
+            out[i][f"{n}: mean time"], out[i][f"{n}: mean lo"], out[i][f"{n}: mean hi"] = m, mlo, mhi
+    return out

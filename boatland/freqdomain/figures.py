@@ -1,0 +1,94 @@
+"""Figures of the frequency-domain tools (matplotlib, imported lazily; Agg backend: files only).
+
+- :func:`plot_raos`: free and hinged RAOs and the hinge-force transfer functions against the period;
+- :func:`plot_limits`: a polar map of the limiting Hs over (relative direction, Tp).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+__all__ = ["plot_limits", "plot_raos"]
+
+
+def _pyplot():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def plot_raos(omega, free, bow_free, hinged, forces, path: str | Path, *, title: str = "") -> Path:
+    """Three panels against the wave period T = 2π/ω (one direction).
+
+    Parameters
+    ----------
+    omega : ndarray, shape (Nw,)
+    free : ndarray of complex, shape (Nw, 6)
+        Free RAO [m/m, rad/m].
+    bow_free : ndarray of complex, shape (Nw, 3)
+        Translation of the (first) fender point of the free vessel [m/m].
+    hinged : ndarray of complex, shape (Nw, 6)
+        Hinged RAO.
+    forces : ndarray of complex, shape (Nw, 3)
+        Hinge force on the vessel summed over the contacts, (normal, vertical, horizontal) [N/m].
+    path : str or Path
+        PNG to write.
+    """
+    plt = _pyplot()
+    T = 2 * np.pi / np.asarray(omega)
+    fig, ax = plt.subplots(1, 3, figsize=(15, 4.5), constrained_layout=True)
+    for k, name in ((2, "heave [m/m]"), (0, "surge [m/m]"), (1, "sway [m/m]")):
+        ax[0].plot(T, np.abs(free[:, k]), label=f"free {name}")
+    for k, name in ((2, "z"), (0, "x"), (1, "y")):
+        ax[0].plot(T, np.abs(bow_free[:, k]), "--", label=f"free, fender point {name} [m/m]")
+    ax[0].set_title("free vessel: translations")
+    for k, name in ((3, "roll"), (4, "pitch"), (5, "yaw")):
+        ax[1].plot(T, np.degrees(np.abs(free[:, k])), label=f"free {name}")
+        ax[1].plot(T, np.degrees(np.abs(hinged[:, k])), "--", label=f"hinged {name}")
+    ax[1].set_title("rotations [deg/m]")
+    for k, name in enumerate(("normal", "vertical", "horizontal")):
+        ax[2].plot(T, np.abs(forces[:, k]) / 1e3, label=name)
+    ax[2].set_title("hinge force on the vessel, all contacts [kN/m]")
+    for a in ax:
+        a.set_xlabel("wave period T [s]")
+        a.grid(alpha=0.3)
+        a.legend(fontsize=7)
+    if title:
+        fig.suptitle(title)
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return Path(path)
+
+
+def plot_limits(table, path: str | Path, *, title: str = "") -> Path:
+    """Polar map of :class:`~boatland.freqdomain.screening.LimitTable`: angle = relative wave direction
+    (travel towards; 180° = head seas, drawn at the top), radius = Tp, colour = limiting Hs [m]."""
+    plt = _pyplot()
+    beta = np.asarray(table.beta_deg, dtype=float)
+    order = np.argsort(beta % 360)
+    b = np.radians(beta[order] % 360)
+    Hs = np.where(np.isfinite(table.Hs), table.Hs, np.nan)[:, order]
+    # cell edges: midway between directions (periodic) and periods
+    bb = np.concatenate([b, [b[0] + 2 * np.pi]])
+    edges_b = np.concatenate([[b[0] - 0.5 * (bb[1] - bb[0]) if b.size > 1 else b[0] - np.pi],
+                              0.5 * (bb[:-1] + bb[1:])]) if b.size > 1 else np.array([0, 2 * np.pi])
+    T = np.asarray(table.Tp, dtype=float)
+    edges_t = np.concatenate([[T[0] - 0.5 * (T[1] - T[0])], 0.5 * (T[:-1] + T[1:]), [T[-1] + 0.5 * (T[-1] - T[-2])]]) \
+        if T.size > 1 else np.array([0.9 * T[0], 1.1 * T[0]])
+    fig = plt.figure(figsize=(6.5, 6), constrained_layout=True)
+    ax = fig.add_subplot(projection="polar")
+    ax.set_theta_zero_location("S")  # 0° (following seas) at the bottom, 180° (head seas) at the top
+    ax.set_theta_direction(-1)
+    mesh = ax.pcolormesh(edges_b, edges_t, Hs, cmap="viridis", shading="flat")
+    fig.colorbar(mesh, ax=ax, label="limiting Hs [m]", shrink=0.8)
+    ax.set_rlabel_position(90)
+    ax.set_title(title or f"limiting Hs, P_acc = {table.accept:g} per access ({table.statistics}, "
+                          f"{table.method}); radius Tp [s]", fontsize=9)
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return Path(path)

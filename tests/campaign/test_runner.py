@@ -1,0 +1,196 @@
+"""Campaigns end to end: the same store from 1 or 2 local workers and from a real Dask cluster; resume
+after SIGKILL; bad input. Real processes throughout (boatland CLI, dask scheduler and workers)."""
+
+import json
+import os
+import signal
+import socket
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import h5py
+import numpy as np
+import pytest
+
+REPO = Path(__file__).resolve().parents[2]
+BASE = REPO / "scenarios" / "ctv_landing.toml"
+
+
+def campaign_file(tmp_path, name="mini", seeds=3, duration=40.0, method="state_space", extra=""):
+    path = tmp_path / f"{name}.toml"
+    path.write_text(f"""
+name = "{name}"
+scenario = "{BASE}"
+seeds = {seeds}
+master_seed = 11
+duration = {duration}
+[set]
+"radiation.method" = "{method}"
+[axes]
+"sea.Hs" = [0.3, 0.6]
+"sea.relative_direction_deg" = [180.0, 135.0]
+[incidents]
+slip_distance = [0.05]
+{extra}
+""")
+    return path
+
+
+def run(*args, timeout=600):
+    return subprocess.run([sys.executable, "-m", "boatland", *map(str, args)], capture_output=True, text=True,
+                          timeout=timeout)
+
+
+def summaries(store):
+    """The trial rows without the wall time (the only column that is not reproducible)."""
+    with h5py.File(store, "r") as f:
+        t = f["trials"][()]
+        stats = f["stats"][()]
+    cols = {n: t[n] for n in t.dtype.names if n != "wall_time"}
+    cols.update({f"stats/{n}": stats[n] for n in stats.dtype.names})
+    return cols
+
+
+def same(a, b):
+    assert a.keys() == b.keys()
+    for name in a:
+        x, y = a[name], b[name]
+        assert x.dtype == y.dtype and x.shape == y.shape, name
+        assert x.tobytes() == y.tobytes(), name      # bit for bit (NaN included)
+
+
+@pytest.fixture(scope="module")
+def reference(tmp_path_factory):
+    tmp = tmp_path_factory.mktemp("ref")
+    camp = campaign_file(tmp)
+    r = run("campaign", camp, "-o", tmp / "one.h5", "--workers", "1")
+    assert r.returncode == 0, r.stderr
+    return camp, tmp / "one.h5"
+
+
+def test_one_and_two_local_workers_give_the_same_store(reference, tmp_path):
+    camp, one = reference
+    r = run("campaign", camp, "-o", tmp_path / "two.h5", "--workers", "2")
+    assert r.returncode == 0, r.stderr
+    same(summaries(one), summaries(tmp_path / "two.h5"))
+    rows = summaries(one)
+    assert len(rows["trial"]) == 12 and sorted(rows["trial"]) == list(range(12)) and (rows["status"] == 0).all()
+    assert len(set(rows["seed"])) == 3                           # common seeds across the 4 cases
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def test_a_real_dask_cluster_gives_the_same_store(reference, tmp_path):
+    camp, one = reference
+    port = free_port()
+    address = f"tcp://127.0.0.1:{port}"
+    procs = [subprocess.Popen(["dask", "scheduler", "--host", "127.0.0.1", "--port", str(port), "--no-dashboard"],
+                              stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)]
+    try:
+        time.sleep(2.0)
+        for _ in range(2):
+            procs.append(subprocess.Popen(["dask", "worker", address, "--nworkers", "1", "--nthreads", "1",
+                                           "--no-dashboard", "--memory-limit", "0"],
+                                          stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL))
+        r = run("campaign", camp, "-o", tmp_path / "dask.h5", "--scheduler", address)
+        assert r.returncode == 0, r.stderr
+    finally:
+        for p in procs[::-1]:
+            p.terminate()
+        for p in procs:
+            p.wait(timeout=30)
+    same(summaries(one), summaries(tmp_path / "dask.h5"))
+
+
+def test_unreachable_scheduler_is_a_clear_error(reference):
+    camp, _ = reference
+    t0 = time.monotonic()
+    r = run("campaign", camp, "-o", Path(camp).with_suffix(".x.h5"), "--scheduler", f"tcp://127.0.0.1:{free_port()}")
+    assert r.returncode == 2 and "no Dask scheduler answered" in r.stderr and "Traceback" not in r.stderr
+    assert time.monotonic() - t0 < 60
+
+
+def test_resume_after_sigkill_equals_an_uninterrupted_run(tmp_path):
+    """Killed with SIGKILL at random moments, then run to the end: the same store as one uninterrupted
+    run, bit for bit in the summaries, every trial once."""
+    camp = campaign_file(tmp_path, name="killed", seeds=4, duration=1200.0, method="convolution")
+    clean = tmp_path / "clean.h5"
+    assert run("campaign", camp, "-o", clean, "--workers", "1").returncode == 0
+    store = tmp_path / "killed.h5"
+    journal = store.with_name(store.name + ".journal")
+
+    def on_disk():
+        n = sum(1 for _ in open(journal)) if journal.exists() else 0
+        if store.exists():
+            with h5py.File(store, "r") as f:
+                n += len(f["trials"])
+        return n
+
+    rng = np.random.default_rng(3)
+    partial = []
+    for _ in range(4):
+        before = on_disk()
+        p = subprocess.Popen([sys.executable, "-m", "boatland", "campaign", str(camp), "-o", str(store),
+                              "--workers", "1"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        deadline = time.monotonic() + 120
+        while on_disk() == before and p.poll() is None and time.monotonic() < deadline:
+            time.sleep(0.05)                       # wait for this run's first new trial (start-up varies)
+        time.sleep(float(rng.uniform(0.0, 1.0)))  # then kill at a random moment
+        p.send_signal(signal.SIGKILL)
+        p.wait()
+        partial.append(on_disk())
+    r = run("campaign", camp, "-o", store, "--workers", "1")
+    assert r.returncode == 0, r.stderr
+    print("trials on disk after each kill:", partial)
+    assert any(0 < n < 16 for n in partial), partial          # at least one kill landed mid-campaign
+    same(summaries(clean), summaries(store))
+    assert not store.with_name(store.name + ".journal").exists()
+
+
+def test_a_store_of_another_campaign_is_refused(reference, tmp_path):
+    _, one = reference
+    other = campaign_file(tmp_path, name="other", seeds=2)
+    r = run("campaign", other, "-o", one)
+    assert r.returncode == 2 and "different campaign" in r.stderr and "refusing to mix" in r.stderr
+
+
+@pytest.mark.parametrize("extra, expected", [
+    ('[axes]\n"sea.Hss" = [1.0]', "axes.sea.Hss: unknown key (did you mean 'Hs'?)"),
+    ('[axes]\n"sea.Tp" = []', "axes.sea.Tp: must be a non-empty list"),
+    ('seedz = 3', "seedz: unknown key"),
+])
+def test_bad_campaign_files_are_one_clear_error(tmp_path, extra, expected):
+    path = tmp_path / "bad.toml"
+    text = campaign_file(tmp_path).read_text()
+    if extra.startswith("[axes]"):
+        text = text.replace('[axes]\n', extra + "\n", 1)
+    else:
+        text = extra + "\n" + text
+    path.write_text(text)
+    r = run("campaign", path, "-o", tmp_path / "bad.h5")
+    assert r.returncode == 2 and expected in r.stderr and "Traceback" not in r.stderr, r.stderr
+
+
+def test_report_writes_tables_and_figures(reference, tmp_path):
+    _, one = reference
+    r = run("report", one, "-o", tmp_path / "rep", "--target", "0.5")
+    assert r.returncode == 0, r.stderr
+    names = {p.name for p in (tmp_path / "rep").iterdir()}
+    assert {"cases.csv", "cases.md", "limiting_hs.csv", "p_vs_hs.png", "limiting_hs_polar.png",
+            "time_to_incident.png"} <= names
+    header = (tmp_path / "rep" / "cases.csv").read_text().splitlines()[0]
+    assert "slip > 0.05 m: P lo" in header and "first slip: mean time [s]" in header
+
+
+def test_an_unwritable_store_fails_before_any_trial(reference, tmp_path):
+    camp, _ = reference
+    blocker = tmp_path / "a_file"
+    blocker.write_text("not a folder")
+    r = run("campaign", camp, "-o", blocker / "store.h5")
+    assert r.returncode == 2 and "cannot write the campaign store here" in r.stderr and "Traceback" not in r.stderr

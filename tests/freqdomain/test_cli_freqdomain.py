@@ -1,0 +1,93 @@
+"""``boatland rao``, ``boatland screen`` and ``boatland operability`` as a user runs them (subprocesses):
+output, figures, and bad input as one line with exit status 2."""
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+SCENARIO = ROOT / "scenarios" / "ctv_landing.toml"
+SCATTER = ROOT / "scenarios" / "scatter_north_sea.csv"
+
+
+def run(*args):
+    return subprocess.run([sys.executable, "-m", "boatland", *map(str, args)], capture_output=True, text=True,
+                          timeout=300)
+
+
+def one_line_error(r, *words):
+    assert r.returncode == 2, (r.returncode, r.stderr)
+    errors = [ln for ln in r.stderr.splitlines() if ln.startswith("boatland: error:")]
+    assert len(errors) == 1 and "Traceback" not in r.stderr, r.stderr
+    assert all(w in errors[0] for w in words), errors[0]
+
+
+def test_help_lists_the_frequency_domain_commands():
+    r = run("--help")
+    assert r.returncode == 0 and all(c in r.stdout for c in ("rao", "screen", "operability"))
+
+
+def test_rao_table_and_figure(tmp_path):
+    png = tmp_path / "rao.png"
+    r = run("rao", SCENARIO, "--periods", "5", "20", "-o", png)
+    assert r.returncode == 0, r.stderr
+    assert "hinged" in r.stdout and png.stat().st_size > 10_000
+
+
+def test_rao_json_long_waves():
+    r = run("rao", "--periods", "30", "--json", "--direction", "0")  # default scenario, long waves
+    rows = json.loads(r.stdout)["rows"]
+    assert abs(rows[0]["free_heave"] - 1) < 0.01  # heave → 1 for long waves
+
+
+def test_screen_table_and_polar_figure(tmp_path):
+    png = tmp_path / "screen.png"
+    r = run("screen", SCENARIO, "--tp", "5", "9", "3", "--directions", "4", "--accept", "conservative", "-o", png)
+    assert r.returncode == 0, r.stderr
+    assert "P_acc = 2e-05" in r.stdout and "governing" in r.stdout and png.stat().st_size > 10_000
+
+
+def test_screen_json():
+    r = run("screen", SCENARIO, "--tp", "5", "9", "3", "--directions", "4", "--json", "--statistics", "rice")
+    out = json.loads(r.stdout)
+    assert out["beta_deg"] == [0.0, 90.0, 180.0, 270.0] and len(out["Hs_limit"]) == 3
+    assert all(0 < h < 2 for row in out["Hs_limit"] for h in row)
+
+
+def test_operability_prints_availability():
+    r = run("operability", SCENARIO, SCATTER, "--json", "--mu", "0.8", "--thrust", "150e3")
+    assert r.returncode == 0, r.stderr
+    out = json.loads(r.stdout)
+    assert 0 < out["availability"] < 1 and out["sea_states"] > 100 and out["mu"] == 0.8
+
+
+@pytest.mark.parametrize("accept", ["0", "1.5", "sometimes"])
+def test_screen_accept_outside_0_1_exit_2(accept):
+    one_line_error(run("screen", SCENARIO, "--accept", accept), "accepted probability")
+
+
+def test_operability_bad_scatter_exit_2(tmp_path):
+    bad = tmp_path / "bad.csv"
+    bad.write_text("Hs,Tp,direction_deg,occurrence\n1,7,180,0.5\n1,8,180,-0.5\n")
+    one_line_error(run("operability", SCENARIO, bad), "bad.csv", "line 3", "negative")
+
+
+def test_operability_sum_far_from_1_warns_and_runs(tmp_path):
+    hours = tmp_path / "hours.csv"
+    hours.write_text("Hs,Tp,direction_from_deg,occurrence\n0.1,7,0,300\n2.0,8,0,100\n")
+    r = run("operability", SCENARIO, hours)
+    assert r.returncode == 0, r.stderr
+    assert "normalised" in r.stderr and "availability 75.0 %" in r.stdout
+
+
+def test_fender_point_outside_the_hull_exit_2(tmp_path):
+    text = SCENARIO.read_text().replace("points = [[12.3, 0.75, 1.5], [12.3, -0.75, 1.5]]",
+                                        "points = [[12.3, 0.75, 1.5], [12.3, -9.75, 1.5]]")
+    assert "-9.75" in text
+    bad = tmp_path / "aft.toml"
+    bad.write_text(text)
+    r = run("screen", bad)
+    assert r.returncode == 2 and "fender.points[1]" in r.stderr and "Traceback" not in r.stderr
