@@ -92,3 +92,28 @@ def plot_limits(table, path: str | Path, *, title: str = "") -> Path:
     fig.savefig(path, dpi=120)
     plt.close(fig)
     return Path(path)
+
+
+def plot_pile_comparison(omega, open_sea, with_pile, betas, path, title: str = ""):
+    """Heave and pitch RAO magnitudes in the open sea and beside the pile, one column per heading."""
+    plt = _pyplot()
+    fig, axes = plt.subplots(2, len(betas), figsize=(3.2 * len(betas), 5.5), sharex=True, squeeze=False)
+    T = 2 * np.pi / np.asarray(omega)
+    for j, b in enumerate(betas):
+        for i, (d, name, scale) in enumerate(((2, "heave [m/m]", 1.0), (4, "pitch [°/m]", 180 / np.pi))):
+            ax = axes[i, j]
+            ax.plot(T, scale * np.abs(open_sea[:, j, d]), label="open sea")
+            ax.plot(T, scale * np.abs(with_pile[:, j, d]), label="beside the pile")
+            ax.grid(alpha=0.3)
+            if j == 0:
+                ax.set_ylabel(name)
+            if i == 0:
+                ax.set_title(f"β = {b:g}°")
+            else:
+                ax.set_xlabel("wave period [s]")
+    axes[0, 0].legend(fontsize=8)
+    fig.suptitle(title, fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path

@@ -152,6 +152,15 @@ class Scenario:
         """The sea's wave model adapted to ``db`` (its water depth unless the file gave one), or None when calm."""
         return None if self.sea is None else self.sea.model(db)
 
+    def pile(self, db: HydroDB) -> tuple[float, tuple[float, float]] | None:
+        """(radius, axis position) of the monopile whose scattered wave the vessel feels, or None:
+        ``landing.diffraction``, by default on when ``db`` has a hull mesh (and there are waves)."""
+        L = self.landing
+        if L is None or self.sea is None:
+            return None
+        on = L.diffraction if L.diffraction is not None else db.mesh is not None
+        return (L.monopile_diameter / 2, tuple(L.monopile_position)) if on else None
+
     def additional_damping(self, db: HydroDB) -> tuple[np.ndarray, np.ndarray]:
         r"""(B_v, B_q): 6×6 diagonal additional linear and quadratic damping for ``db``.
 

@@ -171,6 +171,12 @@ def check_against(scenario, db: HydroDB) -> ScenarioCheck:
                      f"heading {v.heading_deg:g}°{head_how}")
     if scenario.fender is not None and mesh is not None:
         problems += _fender_on_bow(scenario.fender, mesh, db.name)
+    if scenario.landing is not None and scenario.landing.diffraction and mesh is None:
+        problems.append(("landing.diffraction", f"the database {db.name!r} has no hull mesh to integrate the "
+                                                "pile's scattered wave over: set diffraction = false, or use a "
+                                                "database built by 'boatland hydro build' (it stores the mesh)"))
+    elif scenario.pile(db) is not None:
+        notes.append("monopile diffraction: the pile's scattered wave (MacCamy–Fuchs) acts on the hull panels")
     dt = scenario.time_step(db if db.M is not None else None)
     rule = "" if scenario.simulation.dt is not None else " (default rule: min(0.05 s, Tp/100, T_contact/20))"
     notes.append(f"time step dt = {dt:.5g} s{rule}, {scenario.n_steps(db if db.M is not None else None)} steps")

@@ -145,6 +145,7 @@ class Landing:
     monopile_position: tuple[float, float]
     struts: tuple[Strut, ...]
     bearing_deg: float | None = None
+    diffraction: bool | None = None     # None: on when the database has a hull mesh
 
     @property
     def normals(self) -> np.ndarray:

@@ -155,6 +155,9 @@ SCENARIO_SCHEMA = Table({
         "monopile_diameter": Key(float, required=True, gt=0.0, doc="monopile diameter at the waterline [m]"),
         "monopile_position": Vector(size=2, names=("x", "y"), default=(0.0, 0.0),
                                     doc="global position of the monopile axis [m]"),
+        "diffraction": Key(bool, doc="add the pile's scattered wave (MacCamy–Fuchs) to what the vessel feels: "
+                                     "its Froude–Krylov force on the hull panels (default: on when the "
+                                     "database has a hull mesh)"),
         "bearing_deg": Key(float, doc="compact form: global direction from the pile axis to the landing "
                                       "(the side it faces) [deg]"),
         "strut_spacing": Key(float, gt=0.0, doc="compact form: distance between the two strut axes [m]"),

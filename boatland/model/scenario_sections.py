@@ -103,7 +103,7 @@ def landing(ctx: Context) -> Landing | None:
         struts = tuple(Strut((float(x), float(y)), dd, beta) for x, y in
                        (centre + 0.5 * spacing * port, centre - 0.5 * spacing * port))
         return Landing(monopile_diameter=D, monopile_position=(float(c[0]), float(c[1])), struts=struts,
-                       bearing_deg=beta)
+                       bearing_deg=beta, diffraction=d.get("diffraction"))
     struts = tuple(Strut(tuple(t["position"]), t["diameter"], t["normal_deg"]) for t in d["struts"])
     for i, st in enumerate(struts):
         rel = np.array(st.position) - c
@@ -119,7 +119,8 @@ def landing(ctx: Context) -> Landing | None:
                     f"landing towards the vessel, away from the pile (here about {away:.0f}°)")
     if ctx.problems.has("landing"):
         return None
-    result = Landing(monopile_diameter=D, monopile_position=(float(c[0]), float(c[1])), struts=struts)
+    result = Landing(monopile_diameter=D, monopile_position=(float(c[0]), float(c[1])), struts=struts,
+                     diffraction=d.get("diffraction"))
     nsum = result.normals.sum(axis=0)
     if np.linalg.norm(nsum) < 1e-9 or np.min(result.normals @ (nsum / np.linalg.norm(nsum))) < 0.2:
         ctx.add("landing.struts", "the contact-plane normals point in very different directions (more than "

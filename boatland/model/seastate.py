@@ -160,12 +160,13 @@ class _Waves:
         raise NotImplementedError
 
     def excitation(self, db: HydroDB, *, seed=None, dt: float, n_steps: int, x0: float = 0.0, y0: float = 0.0,
-                   heading_deg: float = 0.0, ramp_time: float | None = None) -> np.ndarray:
+                   heading_deg: float = 0.0, ramp_time: float | None = None, pile=None) -> np.ndarray:
         """Excitation force series F (2 n_steps + 1, 6) on t = n dt/2 for a vessel in these waves.
 
         Realises the waves for ``duration = n_steps dt`` and calls :func:`wave_excitation`; warns when
         the database's water depth disagrees with this sea's at its peak frequency. ``ramp_time``
-        defaults to :attr:`default_ramp_time`.
+        defaults to :attr:`default_ramp_time`. ``pile``: ``(radius, (x, y))`` of a monopile whose
+        scattered wave is added (see :func:`wave_excitation`).
         """
         duration = n_steps * dt
         comps = self.realise(seed, duration)
@@ -180,7 +181,7 @@ class _Waves:
                       f"ω = {wref:.3g} rad/s", stacklevel=3)
         T_ramp = self.default_ramp_time if ramp_time is None else ramp_time
         return wave_excitation(comps, db, dt=dt, n_steps=n_steps, x0=x0, y0=y0, heading_deg=heading_deg,
-                               ramp_time=T_ramp)
+                               ramp_time=T_ramp, pile=None if pile is None else (*pile, self.water_depth))
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -568,7 +569,7 @@ def excitation_table(db: HydroDB) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 
 
 def wave_excitation(components: Components, db: HydroDB, *, dt: float, n_steps: int, x0: float = 0.0,
-                    y0: float = 0.0, heading_deg: float = 0.0, ramp_time: float = 0.0) -> np.ndarray:
+                    y0: float = 0.0, heading_deg: float = 0.0, ramp_time: float = 0.0, pile=None) -> np.ndarray:
     r"""Excitation force series on the RK4 grid t_n = n Δt/2, n = 0..2 n_steps, body frame.
 
     .. math::
@@ -595,6 +596,12 @@ def wave_excitation(components: Components, db: HydroDB, *, dt: float, n_steps: 
         Heading ψ of the vessel's x axis in the global frame [deg].
     ramp_time : float
         Half-cosine start-up ramp [s] (0 = none).
+    pile : (radius, (x, y), water_depth), optional
+        A bottom-mounted monopile: the Froude–Krylov force of its scattered wave (MacCamy–Fuchs) on the
+        hull panels is added at every component (seed 000 eq. 3.21–3.22, 4.5) — from a cached ω table
+        for long-crested seas (:func:`boatland.model.pile_diffraction.pile_scattered_interpolated`),
+        else exactly (:func:`~boatland.model.pile_diffraction.pile_scattered_components`). The vessel's
+        own scattering of the pile's wave is neglected, as in seed 000.
 
     Returns
     -------
@@ -610,9 +617,21 @@ def wave_excitation(components: Components, db: HydroDB, *, dt: float, n_steps: 
         if not (_is_number(v) and math.isfinite(v)):
             raise ValueError(f"{name} must be a finite number, got {v!r}")
     omega, beta, X = excitation_table(db)
+    X_extra = None
+    if pile is not None:
+        from boatland.model.pile_diffraction import pile_scattered_components, pile_scattered_interpolated
+
+        radius, (px, py), depth = pile
+        waves = components.omega > 0
+        few_directions = np.unique(components.theta[waves]).size <= 8   # long-crested: a cached ω table
+        scattered = pile_scattered_interpolated if few_directions else pile_scattered_components
+        X_extra = np.zeros((6, components.size), dtype=complex)
+        X_extra[:, waves] = scattered(db, (float(x0) - px, float(y0) - py), heading_deg, radius,
+                                      components.omega[waves], components.theta[waves],
+                                      None if math.isinf(depth) else depth)
     F, _, n_above = excitation_series(components, omega, beta, X, float(x0), float(y0),
                                       math.radians(heading_deg), 0.0, 0.5 * dt, 2 * int(n_steps) + 1,
-                                      float(ramp_time))
+                                      float(ramp_time), X_extra)
     if n_above:
         above = components.omega > omega[-1]
         share = float(np.sum(components.a[above] ** 2) / max(np.sum(components.a ** 2), 1e-300))

@@ -154,7 +154,7 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
         F = np.zeros((2 * n + 1, 6))
     else:
         F = waves.excitation(db, seed=scenario.simulation.seed, dt=dt, n_steps=n, x0=x0g, y0=y0g,
-                             heading_deg=float(np.degrees(psi)), ramp_time=0.0)
+                             heading_deg=float(np.degrees(psi)), ramp_time=0.0, pile=scenario.pile(db))
         F *= wave_ramp(scenario, dt, n)[:, None]
     thrust = thrust_series(scenario, dt, n)
     Bv, Bq = scenario.additional_damping(db)

@@ -133,7 +133,7 @@ def ramp(t, T_ramp: float) -> np.ndarray:
 
 
 def excitation_series(components, omega, beta_deg, X, x0: float, y0: float, psi: float, t0: float,
-                      h: float, n: int, T_ramp: float = 0.0):
+                      h: float, n: int, T_ramp: float = 0.0, X_extra=None):
     r"""Excitation force series F (n, m) on t_n = t0 + n h, body frame (module docstring).
 
     Parameters
@@ -156,6 +156,10 @@ def excitation_series(components, omega, beta_deg, X, x0: float, y0: float, psi:
         Number of times (2 N_steps + 1 for RK4).
     T_ramp : float
         Duration of the half-cosine start-up ramp [s], measured from t = 0; 0 for none.
+    X_extra : ndarray of complex, shape (m, N), optional
+        More excitation per unit amplitude at each component, referred like X (e.g. the monopile's
+        scattered wave, :func:`boatland.model.pile_diffraction.pile_scattered_components`); added to
+        the interpolated X before the sum (zero above the table's band, like X).
 
     Returns
     -------
@@ -165,6 +169,10 @@ def excitation_series(components, omega, beta_deg, X, x0: float, y0: float, psi:
         Components below / above the table's band (see :func:`interpolate_excitation`).
     """
     c, n_below, n_above = excitation_coefficients(components, omega, beta_deg, X, x0, y0, psi)
+    if X_extra is not None:
+        cp = components
+        extra = np.where((cp.omega > omega[-1])[None, :], 0.0, X_extra)
+        c = c + extra * (cp.a * np.exp(1j * (cp.phi - cp.k * (x0 * np.cos(cp.theta) + y0 * np.sin(cp.theta)))))[None, :]
     F = harmonic_sum(components.omega, c, t0, h, n)
     if T_ramp > 0:
         F *= ramp(t0 + h * np.arange(n), T_ramp)[:, None]

@@ -1,8 +1,6 @@
 """Campaigns end to end: the same store from 1 or 2 local workers and from a real Dask cluster; resume
 after SIGKILL; bad input. Real processes throughout (boatland CLI, dask scheduler and workers)."""
 
-import json
-import os
 import signal
 import socket
 import subprocess

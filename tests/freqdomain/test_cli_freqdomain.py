@@ -91,3 +91,17 @@ def test_fender_point_outside_the_hull_exit_2(tmp_path):
     bad.write_text(text)
     r = run("screen", bad)
     assert r.returncode == 2 and "fender.points[1]" in r.stderr and "Traceback" not in r.stderr
+
+
+def test_rao_compare_open_sea_writes_the_figure(tmp_path):
+    """Issue 9: free RAOs beside the pile vs the open sea for five headings, as a figure."""
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    scenario = Path(__file__).resolve().parents[2] / "scenarios" / "ctv_landing.toml"
+    out = tmp_path / "cmp.png"
+    r = subprocess.run([sys.executable, "-m", "boatland", "rao", str(scenario), "--periods", "7",
+                        "--compare-open-sea", str(out)], capture_output=True, text=True, timeout=300)
+    assert r.returncode == 0, r.stderr
+    assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and out.stat().st_size > 20000

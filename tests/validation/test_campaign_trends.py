@@ -35,7 +35,7 @@ slip_distance = [0.1]
     c = load_campaign(camp, load_scenario=load)
     store = run_campaign(c, tmp_path / f"{name}.h5", loaders=(load, resolve_database), workers=2)
     t = store.table()
-    assert (t["status"] == 0).all()
+    assert (t["status"] == 0).all(), [(int(r["trial"]), r["message"]) for r in t if r["status"] != 0]
     return c, t
 
 

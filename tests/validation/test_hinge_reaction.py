@@ -66,7 +66,7 @@ def scenario(T, relative_direction_deg, memory, duration, yaw_damping=0.0):
         "simulation": {"duration": duration, "seed": 1},
         "vessel": {"database": "ctv24", "damping": {"linear": [0.0] * 5 + [yaw_damping]}},
         "radiation": {"method": "convolution", "memory": memory},
-        "landing": {"monopile_diameter": 6.5,
+        "landing": {"monopile_diameter": 6.5, "diffraction": False,   # the open-sea RAO of the FD side
                     "struts": [{"position": [-4.45, 0.0], "diameter": 0.35, "normal_deg": 180.0}]},
         "fender": {"points": [POINT], "stiffness": STIFFNESS, "damping": DAMPING, "mu_s": 2.0, "mu_k": 2.0,
                    "k_v": 0.0, "sideways": True},

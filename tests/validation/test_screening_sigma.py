@@ -36,7 +36,7 @@ def case():
         base = load(default_scenario_path())
         db = resolve_database(base)
     s = base.replace({"sea.Hs": 0.1, "fender.mu_s": 2.0, "fender.mu_k": 2.0, "fender.k_v": 0.0,
-                      "simulation.duration": 1800.0})
+                      "simulation.duration": 1800.0, "landing.diffraction": False})  # open sea, as the FD side
     setup = LandingSetup.from_scenario(s, db)
     w = default_omega(db)
     h = hinged_rao(db, w, setup.points, beta_deg=[180.0], normal=setup.normals, stiffness=setup.stiffness,

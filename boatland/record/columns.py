@@ -1,0 +1,122 @@
+"""The recorded quantities of a block of steps, as columns: what the MCAP log stores and Rerun shows.
+
+Both the live sinks (from :class:`~boatland.trial.sink.StepBlock`) and the replay (from an MCAP file)
+produce :class:`Columns`, and the Rerun logger consumes only :class:`Columns` — so a replayed log shows
+exactly what the live stream showed.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, fields
+
+import numpy as np
+
+from boatland.contact.fender import OPEN, STICK
+
+__all__ = ["Columns", "LandingTracker", "world_pose", "bow_elevation"]
+
+
+@dataclass(frozen=True, eq=False)
+class Columns:
+    """Rows of a trial (any consecutive range). Shapes as in :class:`~boatland.trial.result.Result`;
+    ``slip`` (n, Nc) is the landing offset [m] (NaN while open / not yet caught), ``eta_bow`` (n,) the
+    undisturbed wave elevation at the bow [m], ``translation`` (n, 3) and ``quaternion`` (n, 4, xyzw)
+    the world pose of the reference point."""
+
+    t: np.ndarray
+    x: np.ndarray
+    v: np.ndarray
+    F_exc: np.ndarray
+    thrust: np.ndarray
+    mode: np.ndarray
+    fn: np.ndarray
+    ft: np.ndarray
+    needed: np.ndarray
+    available: np.ndarray
+    tpos: np.ndarray
+    slip: np.ndarray
+    eta_bow: np.ndarray
+    translation: np.ndarray
+    quaternion: np.ndarray
+
+    def __len__(self) -> int:
+        return len(self.t)
+
+    @staticmethod
+    def concatenate(parts: list["Columns"]) -> "Columns":
+        return Columns(**{f.name: np.concatenate([getattr(p, f.name) for p in parts]) for f in fields(Columns)})
+
+
+class LandingTracker:
+    """Incremental :func:`boatland.trial.events.landing_offset`: feed consecutive blocks of (mode, tpos)
+    and get the same distances as the whole-run function (the landing point carries across blocks)."""
+
+    def __init__(self, n_contacts: int):
+        self.anchor = np.full((n_contacts, 2), np.nan)   # landing position of the current spell
+        self.touching = np.zeros(n_contacts, bool)       # at the last row of the previous block
+
+    def __call__(self, mode: np.ndarray, tpos: np.ndarray) -> np.ndarray:
+        n, nc = mode.shape
+        if n and self.touching.all() and not np.isnan(self.anchor[:, 0]).any() and (mode != OPEN).all():
+            d = tpos - self.anchor[None, :, :]             # the usual case: all landed and still touching
+            return np.hypot(d[:, :, 0], d[:, :, 1])
+        out = np.full((n, nc), np.nan)
+        for c in range(nc):
+            m = mode[:, c]
+            if not np.isnan(self.anchor[c, 0]) and self.touching[c] and np.all(m != OPEN):
+                d = tpos[:, c] - self.anchor[c]          # the usual case: landed and still touching
+                out[:, c] = np.hypot(d[:, 0], d[:, 1])
+                continue
+            for k in range(n):                           # a block with a change of state
+                touching = m[k] != OPEN
+                if not touching:
+                    self.anchor[c] = np.nan
+                elif not self.touching[c]:
+                    self.anchor[c] = np.nan              # a new spell of contact
+                if touching and np.isnan(self.anchor[c, 0]) and m[k] == STICK:
+                    self.anchor[c] = tpos[k, c]
+                if touching and not np.isnan(self.anchor[c, 0]):
+                    d = tpos[k, c] - self.anchor[c]
+                    out[k, c] = np.hypot(d[0], d[1])
+                self.touching[c] = touching
+            self.touching[c] = m[-1] != OPEN if n else self.touching[c]
+        return out
+
+
+def world_pose(x: np.ndarray, start_pose) -> tuple[np.ndarray, np.ndarray]:
+    """World translation (n, 3) and rotation quaternion (n, 4, xyzw) of the reference point.
+
+    ``x`` (n, 6) is in the local frame of ``start_pose = (x0, y0, psi)`` (DESIGN.md §2); the rotation is
+    R = Rz(ψ + yaw) Ry(pitch) Rx(roll), as :func:`boatland.rigid.rotation_matrix`.
+    """
+    x0, y0, psi = start_pose
+    c, s = np.cos(psi), np.sin(psi)
+    tr = np.empty((len(x), 3))
+    tr[:, 0] = x0 + c * x[:, 0] - s * x[:, 1]
+    tr[:, 1] = y0 + s * x[:, 0] + c * x[:, 1]
+    tr[:, 2] = x[:, 2]
+    hr, hp, hy = 0.5 * x[:, 3], 0.5 * x[:, 4], 0.5 * (x[:, 5] + psi)
+    cr, sr, cp, sp, cy, sy = np.cos(hr), np.sin(hr), np.cos(hp), np.sin(hp), np.cos(hy), np.sin(hy)
+    q = np.empty((len(x), 4))
+    q[:, 0] = sr * cp * cy - cr * sp * sy
+    q[:, 1] = cr * sp * cy + sr * cp * sy
+    q[:, 2] = cr * cp * sy - sr * sp * cy
+    q[:, 3] = cr * cp * cy + sr * sp * sy
+    return tr, q
+
+
+def bow_elevation(info) -> np.ndarray:
+    """Undisturbed wave elevation [m] (n_steps + 1,) at the bow (mean of the fender points) at rest,
+    ramped in as the excitation is (:func:`boatland.trial.simulate.wave_ramp`); zeros without waves."""
+    from boatland.trial.simulate import wave_ramp
+    from boatland.waves.synthesis import elevation_series
+
+    n, dt = info.n_steps, info.dt
+    if info.waves is None:
+        return np.zeros(n + 1)
+    P = np.asarray(info.contacts[0]).reshape(-1, 3)
+    bx, by = (P[:, :2].mean(axis=0) if len(P) else np.zeros(2))
+    x0, y0, psi = info.start_pose
+    gx, gy = x0 + np.cos(psi) * bx - np.sin(psi) * by, y0 + np.sin(psi) * bx + np.cos(psi) * by
+    comps = info.waves.realise(info.scenario.simulation.seed, n * dt)
+    return elevation_series(comps, gx, gy, 0.0, dt, n + 1) * wave_ramp(info.scenario, dt, n)[::2]

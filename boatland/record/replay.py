@@ -1,0 +1,58 @@
+"""Replay a run log (MCAP) into Rerun with the scene and layout of the live stream.
+
+The log is read with :func:`boatland.record.reader.read_run_log` (a truncated log is recovered up to its
+last complete block, and the loss is reported) and written through the same
+:class:`~boatland.record.rerun_log.RerunView` as the live stream, so both give the same entities and
+values.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+from boatland.record.mcap_log import NS
+from boatland.record.reader import RunLog, read_run_log
+from boatland.record.rerun_log import RerunView, open_stream
+from boatland.record.scene import scene_from_metadata
+
+__all__ = ["replay", "Replayed"]
+
+
+@dataclass(frozen=True, eq=False)
+class Replayed:
+    """What :func:`replay` did: the log read, the open stream, the target kind and where it went
+    (file path or server URL), and notes on what was recovered or could not be rebuilt."""
+
+    log: RunLog
+    stream: object
+    kind: str
+    where: str | None
+    notes: list
+
+
+def replay(path: str | Path, target: str, *, quiet: bool = False) -> Replayed:
+    """Send the run log ``path`` to a Rerun ``target`` (``save=PATH``, ``serve``, ``spawn``, ``connect[=URL]``).
+
+    Returns
+    -------
+    Replayed
+        File targets are closed (footer written); a ``serve`` target stays up while the process lives.
+
+    Raises
+    ------
+    BoatlandInputError
+        Not a boatland run log, nothing recoverable, or an unusable target.
+    """
+    log = read_run_log(path)
+    nc = log.columns.mode.shape[1]
+    scene = scene_from_metadata(log.metadata)
+    rec, kind, where = open_stream(target, recording_id=log.metadata.get("run_id") or None, n_contacts=nc, quiet=quiet)
+    view = RerunView(rec, scene, nc)
+    view.static()
+    view.columns(log.columns)
+    view.events([(round(t * NS), level, text) for t, level, text in log.events])
+    rec.flush()
+    if kind in ("save", "spawn", "connect"):
+        rec.disconnect()
+    return Replayed(log, rec, kind, where, list(log.notes) + list(scene.notes))

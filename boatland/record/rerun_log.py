@@ -1,0 +1,303 @@
+"""Rerun: the live stream of a running trial (:class:`RerunLog`, a sink) and the writer both it and the
+replay use (:class:`RerunView`: scene, time series, events, default layout).
+
+Targets (``boatland run --rerun TARGET``): ``save=PATH.rrd`` (a file), ``serve`` (a gRPC server in this
+process that viewers connect to, late viewers get the whole run), ``connect[=URL]`` (push to a viewer
+already listening; checked before the run), ``spawn`` (start a native viewer; needs a display). None of
+them waits for a viewer that is not there: an absent viewer is an error before the trial starts.
+"""
+
+from __future__ import annotations
+
+import os
+import socket
+import sys
+import uuid
+from urllib.parse import urlparse
+
+import numpy as np
+
+from boatland.errors import BoatlandInputError
+from boatland.record.columns import Columns, LandingTracker, bow_elevation
+from boatland.record.mcap_log import IncidentWatch, columns_from_block, end_event, step_events
+from boatland.record.scene import PATCH_DT, Scene, scene_from_trial
+
+__all__ = ["RerunView", "RerunLog", "parse_target", "open_stream", "check_target", "blueprint", "serve_until_interrupted", "APPLICATION_ID", "TIMELINE"]
+
+APPLICATION_ID = "boatland"
+TIMELINE = "sim_time"
+DEFAULT_URL = "rerun+http://127.0.0.1:9876/proxy"
+MODE_COLORS = np.array([[150, 150, 150, 255], [40, 190, 60, 255], [230, 40, 40, 255]], np.uint8)  # open stick slip
+FLUSH_EVERY = 30.0     # [s] of simulated time buffered between sends of the live stream
+
+
+def parse_target(spec: str) -> tuple[str, str | None]:
+    """``spawn | serve | connect[=URL] | save=PATH`` → (kind, argument)."""
+    kind, _, arg = spec.partition("=")
+    if kind in ("spawn", "serve") and not arg:
+        return kind, None
+    if kind == "connect":
+        return kind, arg or DEFAULT_URL
+    if kind == "save" and arg:
+        return kind, arg
+    raise BoatlandInputError(f"--rerun {spec}: expected spawn, serve, connect[=URL] or save=PATH.rrd")
+
+
+def _check_viewer(url: str) -> None:
+    u = urlparse(url)
+    host, port = u.hostname or "127.0.0.1", u.port or 9876
+    try:
+        with socket.create_connection((host, port), timeout=1.0):
+            pass
+    except OSError:
+        raise BoatlandInputError(f"--rerun connect: no Rerun viewer listening at {url} (start one with 'rerun', "
+                                 "or use --rerun serve / --rerun save=FILE.rrd)") from None
+
+
+def blueprint(n_contacts: int = 0):
+    """The default layout: 3D scene left; motions, fender forces, slip distance, events right."""
+    import rerun.blueprint as rrb
+
+    return rrb.Blueprint(
+        rrb.Horizontal(
+            rrb.Spatial3DView(origin="/world", name="Landing"),
+            rrb.Vertical(
+                rrb.TimeSeriesView(origin="/plots/motion", name="Motions (heave m; roll, pitch deg)"),
+                rrb.TimeSeriesView(origin="/plots/fender", name="Fender forces vs available friction [kN]"),
+                rrb.TimeSeriesView(origin="/plots/slip", name="Slip distance from landing [m]"),
+                rrb.TextLogView(origin="/events", name="Events"),
+                row_shares=[2, 2, 1.5, 1]),
+            column_shares=[3, 2]),
+        collapse_panels=True)
+
+
+def check_target(target: str) -> tuple[str, str | None]:
+    """Parse ``target`` and make sure using it cannot hang: a viewer must be listening for ``connect``,
+    a display must exist for ``spawn``, the directory of ``save=PATH`` must exist.
+
+    Raises
+    ------
+    BoatlandInputError
+        With what to do instead.
+    """
+    from pathlib import Path
+
+    kind, arg = parse_target(target)
+    if kind == "connect":
+        _check_viewer(arg)
+    if kind == "spawn" and not (os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY")
+                                or sys.platform in ("darwin", "win32")):
+        raise BoatlandInputError("--rerun spawn: no display here (neither DISPLAY nor WAYLAND_DISPLAY is set); "
+                                 "use --rerun serve, or --rerun save=FILE.rrd and open it elsewhere")
+    if kind == "save" and not Path(arg).resolve().parent.is_dir():
+        raise BoatlandInputError(f"--rerun save={arg}: the directory {Path(arg).parent} does not exist")
+    return kind, arg
+
+
+def open_stream(target: str, *, recording_id: str | None = None, n_contacts: int = 0, quiet: bool = False):
+    """A RecordingStream sending to ``target`` (checked with :func:`check_target`), with the default layout.
+
+    Returns (stream, kind, uri-or-path)."""
+    import rerun as rr
+
+    kind, arg = check_target(target)
+    rec = rr.RecordingStream(APPLICATION_ID, recording_id=recording_id or str(uuid.uuid4()))
+    bp = blueprint(n_contacts)
+    where = arg
+    if kind == "save":
+        rec.save(arg, default_blueprint=bp)
+    elif kind == "serve":
+        where = rec.serve_grpc(default_blueprint=bp)
+        if not quiet:
+            print(f"rerun: serving the run at {where} (open it with: rerun {where})", file=sys.stderr)
+    elif kind == "connect":
+        rec.connect_grpc(arg, default_blueprint=bp)
+    else:
+        rec.spawn(default_blueprint=bp)
+    return rec, kind, where
+
+
+class RerunView:
+    """Writes a trial to a Rerun stream: the static scene once, then columns and events in batches
+    (``send_columns``, one call per entity per batch)."""
+
+    def __init__(self, rec, scene: Scene, n_contacts: int):
+        self.rec, self.scene, self.nc = rec, scene, n_contacts
+        self._sea_next = 0.0
+
+    def static(self) -> None:
+        import rerun as rr
+
+        rec, sc = self.rec, self.scene
+        rec.log("/world", rr.ViewCoordinates.RIGHT_HAND_Z_UP, static=True)
+        mx, my, md = sc.monopile
+        if md > 0:
+            rec.log("/world/monopile", rr.Cylinders3D(lengths=[PILE_LEN], radii=[md / 2],
+                                                      centers=[[mx, my, PILE_MID]], colors=[[230, 200, 40]]),
+                    static=True)
+        if sc.struts:
+            s = np.asarray(sc.struts, float)
+            rec.log("/world/landing/struts", rr.Cylinders3D(
+                lengths=np.full(len(s), PILE_LEN), radii=s[:, 2] / 2,
+                centers=np.column_stack([s[:, 0], s[:, 1], np.full(len(s), PILE_MID)]), colors=[[240, 240, 240]]),
+                static=True)
+        rec.log("/world/vessel/hull", rr.Mesh3D(vertex_positions=sc.hull_vertices, triangle_indices=sc.hull_triangles,
+                                                albedo_factor=[70, 110, 170, 255]), static=True)
+        if len(sc.fender_points):
+            rec.log("/world/vessel/fender", rr.Points3D(sc.fender_points, radii=0.25,
+                                                        colors=MODE_COLORS[np.zeros(len(sc.fender_points), int)]),
+                    static=True)
+        if sc.components is not None:
+            X, Y, tri = sc.patch_grid()
+            rec.log("/world/sea", rr.Mesh3D(vertex_positions=np.column_stack([X, Y, np.zeros_like(X)]),
+                                            triangle_indices=tri, albedo_factor=[40, 120, 200, 120]), static=True)
+        styles = {"/plots/motion/heave": "heave [m]", "/plots/motion/roll": "roll [deg]",
+                  "/plots/motion/pitch": "pitch [deg]"}
+        for k in range(self.nc):
+            for name in ("normal", "friction", "needed", "available"):
+                styles[f"/plots/fender/{k}/{name}"] = f"contact {k} {name}"
+            styles[f"/plots/slip/{k}"] = f"contact {k}"
+        for path, name in styles.items():
+            rec.log(path, rr.SeriesLines(names=name), static=True)
+
+    def columns(self, c: Columns) -> None:
+        import rerun as rr
+
+        if not len(c):
+            return
+        rec = self.rec
+        idx = [rr.TimeColumn(TIMELINE, duration=c.t)]
+        send = lambda path, values: rr.send_columns(path, indexes=idx, recording=rec,  # noqa: E731
+                                                    columns=rr.Scalars.columns(scalars=np.asarray(values, float)))
+        rr.send_columns("/world/vessel", indexes=idx, recording=rec,
+                        columns=rr.Transform3D.columns(translation=c.translation, quaternion=c.quaternion))
+        send("/plots/motion/heave", c.x[:, 2])
+        send("/plots/motion/roll", np.degrees(c.x[:, 3]))
+        send("/plots/motion/pitch", np.degrees(c.x[:, 4]))
+        for k in range(self.nc):
+            send(f"/plots/fender/{k}/normal", c.fn[:, k] / 1e3)
+            send(f"/plots/fender/{k}/friction", np.hypot(c.ft[:, k, 0], c.ft[:, k, 1]) / 1e3)
+            send(f"/plots/fender/{k}/needed", c.needed[:, k] / 1e3)
+            send(f"/plots/fender/{k}/available", c.available[:, k] / 1e3)
+            send(f"/plots/slip/{k}", c.slip[:, k])
+        send("/plots/loads/thrust", c.thrust / 1e3)
+        send("/plots/sea/bow_elevation", c.eta_bow)
+        if self.nc:
+            rr.send_columns("/world/vessel/fender", indexes=idx, recording=rec,
+                            columns=rr.Points3D.columns(colors=MODE_COLORS[c.mode.ravel()]).partition(
+                                np.full(len(c), self.nc)))
+        self._sea(float(c.t[-1]))
+
+    def _sea(self, t_last: float) -> None:
+        """Sea-patch frames on the grid k·PATCH_DT up to ``t_last``."""
+        import rerun as rr
+
+        if self.scene.components is None:
+            return
+        k0 = int(np.ceil(self._sea_next / PATCH_DT - 1e-9))
+        k1 = int(np.floor(t_last / PATCH_DT + 1e-9))
+        if k1 < k0:
+            return
+        t = np.arange(k0, k1 + 1) * PATCH_DT
+        eta = self.scene.sea_frames(t)
+        X, Y, _ = self.scene.patch_grid()
+        P = len(X)
+        pos = np.empty((len(t), P, 3), np.float32)
+        pos[:, :, 0], pos[:, :, 1], pos[:, :, 2] = X, Y, eta
+        rr.send_columns("/world/sea", indexes=[rr.TimeColumn(TIMELINE, duration=t)], recording=self.rec,
+                        columns=rr.Mesh3D.columns(vertex_positions=pos.reshape(-1, 3)).partition(np.full(len(t), P)))
+        self._sea_next = (k1 + 1) * PATCH_DT
+
+    def events(self, events: list[tuple[int, str, str]]) -> None:
+        """``(t_ns, level, text)`` events to ``/events``."""
+        import rerun as rr
+
+        if not events:
+            return
+        t = np.array([e[0] for e in events], np.int64).astype("timedelta64[ns]")
+        rr.send_columns("/events", indexes=[rr.TimeColumn(TIMELINE, duration=t)], recording=self.rec,
+                        columns=rr.TextLog.columns(text=[e[2] for e in events],
+                                                   level=[{"WARNING": "WARN"}.get(e[1], e[1]) for e in events]))
+
+
+PILE_LEN = 32.0   # [m] drawn length of the monopile and struts, from z = -20 to 12 m
+PILE_MID = -4.0
+
+
+class RerunLog:
+    """Streams a running trial to Rerun (implements :class:`~boatland.trial.sink.TrialSink`).
+
+    Parameters
+    ----------
+    target : str
+        ``spawn | serve | connect[=URL] | save=PATH.rrd`` (:func:`parse_target`).
+    recording_id : str, optional
+        Shared with the MCAP log so a replay of it is the same recording.
+
+    Blocks are buffered and sent every :data:`FLUSH_EVERY` seconds of simulated time (batched
+    ``send_columns``); the viewer target is opened (and checked) in :meth:`start`.
+    """
+
+    def __init__(self, target: str, *, recording_id: str | None = None, quiet: bool = False):
+        check_target(target)               # a bad spec or an absent viewer fails before anything runs
+        self.target, self.recording_id, self.quiet = target, recording_id, quiet
+        self.rec, self.kind, self.where, self._closed = None, None, None, False
+
+    def start(self, info) -> None:
+        self.info = info
+        nc = np.asarray(info.contacts[0]).reshape(-1, 3).shape[0]
+        self.rec, self.kind, self.where = open_stream(self.target, recording_id=self.recording_id, n_contacts=nc,
+                                                      quiet=self.quiet)
+        self.view = RerunView(self.rec, scene_from_trial(info.scenario, info.db, info.start_pose, info.contacts), nc)
+        self.view.static()
+        self._tracker, self._incidents, self._eta = LandingTracker(nc), IncidentWatch(info.scenario), None
+        self._buf, self._events = [], []
+
+    def steps(self, block) -> None:
+        if self._eta is None:
+            self._eta = bow_elevation(self.info)
+        c = columns_from_block(block, self.info, self._tracker, self._eta)
+        self._buf.append(Columns(**{k: np.array(v) for k, v in vars(c).items()}))
+        self._events += step_events(block, c.t, c.x, c.slip, self._incidents)
+        if self._buf[-1].t[-1] - self._buf[0].t[0] >= FLUSH_EVERY:
+            self._send()
+
+    def _send(self) -> None:
+        if self._buf:
+            self.view.columns(Columns.concatenate(self._buf))
+        self.view.events(self._events)
+        self._buf, self._events = [], []
+
+    def finish(self, result) -> None:
+        self._events.append(end_event(result))
+        self._send()
+        self.close()
+
+    def close(self) -> None:
+        """Flush; close a file target (writes its footer). A served stream stays up (:meth:`serve_until_interrupted`)."""
+        if self.rec is None or self._closed:
+            return
+        self._closed = True
+        try:
+            self.rec.flush(timeout_sec=10.0) if self.kind == "connect" else self.rec.flush()
+        except RuntimeError as exc:   # the viewer went away: the run itself is fine
+            print(f"warning: rerun: {exc}", file=sys.stderr)
+        if self.kind in ("save", "connect", "spawn"):
+            self.rec.disconnect()
+
+
+def serve_until_interrupted(where: str) -> None:
+    """Keep a served stream up for viewers until Ctrl-C (only when stdin is a terminal; a non-interactive
+    run returns at once so that nothing ever waits for a viewer)."""
+    import time
+
+    if not sys.stdin.isatty():
+        print(f"rerun: not waiting for viewers (stdin is not a terminal); the server at {where} stops now",
+              file=sys.stderr)
+        return
+    print(f"rerun: the run is finished; viewers can still open {where}. Ctrl-C to stop.", file=sys.stderr)
+    try:
+        while True:
+            time.sleep(0.5)
+    except KeyboardInterrupt:
+        pass

@@ -1,0 +1,142 @@
+"""The run log read back through the mcap reader equals the in-memory result, channel by channel."""
+
+import json
+
+import numpy as np
+from mcap.reader import make_reader
+from mcap_protobuf.decoder import DecoderFactory
+
+from boatland import __version__
+from boatland.record.columns import LandingTracker, world_pose
+from boatland.record.schemas import TOPICS, message_class
+from boatland.rigid import rotation_matrix
+from boatland.trial.events import landing_offset
+
+
+def _read(path, topic):
+    with open(path, "rb") as f:
+        r = make_reader(f, decoder_factories=[DecoderFactory()])
+        return [(m.log_time, obj) for _, _, m, obj in r.iter_decoded_messages(topics=[topic], log_time_order=True)]
+
+
+def test_channels_schemas_counts_and_metadata(recorded):
+    r = recorded.result
+    with open(recorded.mcap, "rb") as f:
+        reader = make_reader(f)
+        s = reader.get_summary()
+        topics = {c.topic: s.schemas[c.schema_id].name for c in s.channels.values()}
+        counts = {s.channels[cid].topic: n for cid, n in s.statistics.channel_message_counts.items()}
+        meta = {m.name: m.metadata for m in reader.iter_metadata()}
+        assert reader.get_header().library == f"boatland {__version__}"
+    assert topics == TOPICS
+    n = len(r.t)
+    assert counts["/tf"] == counts["/vessel/state"] == counts["/vessel/loads"] == counts["/fender/state"] == n
+    assert s.statistics.chunk_count == int(np.ceil(n / 20)) + 1     # one chunk per second + the closing event
+    run = meta["boatland.run"]
+    assert run["boatland"] == __version__ and int(run["seed"]) == recorded.scenario.simulation.seed
+    assert json.loads(run["scenario"])["name"] == "ctv_landing" and run["run_id"] == recorded.run_id
+    assert float(run["dt"]) == r.provenance["dt"] and int(run["n_steps"]) == n - 1
+    assert json.loads(meta["boatland.summary"]["summary"])["slip_events"] == len(r.slip_events())
+
+
+def test_step_values_equal_the_result(recorded):
+    r = recorded.result
+    n = len(r.t)
+    st = _read(recorded.mcap, "/vessel/state")
+    assert [t for t, _ in st] == [round(t * 1e9) for t in r.t]
+    x = np.array([[m.surge, m.sway, m.heave, m.roll, m.pitch, m.yaw] for _, m in st])
+    v = np.array([[m.u, m.v, m.w, m.p, m.q, m.r] for _, m in st])
+    np.testing.assert_array_equal(x, r.x)
+    np.testing.assert_array_equal(v, r.v)
+    ld = [m for _, m in _read(recorded.mcap, "/vessel/loads")]
+    np.testing.assert_array_equal([m.thrust for m in ld], r.thrust)
+    np.testing.assert_array_equal([[m.F_surge, m.F_sway, m.F_heave, m.M_roll, m.M_pitch, m.M_yaw] for m in ld], r.F_exc)
+    eta = np.array([m.wave_elevation_bow for m in ld])
+    assert np.all(eta[r.t < 20.0] == 0.0) and 0.2 < np.abs(eta).max() < 2.0        # waves start at 20 s (thrust ramp)
+    fs = [m for _, m in _read(recorded.mcap, "/fender/state")]
+    assert len(fs) == n and all(len(m.contacts) == 2 for m in fs)
+    get = lambda f: np.array([[getattr(c, f) for c in m.contacts] for m in fs])  # noqa: E731
+    np.testing.assert_array_equal(get("mode"), r.mode)
+    np.testing.assert_array_equal(get("normal_force"), r.fn)
+    np.testing.assert_array_equal(np.stack([get("friction_vertical"), get("friction_horizontal")], 2), r.ft)
+    np.testing.assert_array_equal(get("needed"), r.needed)
+    np.testing.assert_array_equal(get("available"), r.available)
+    np.testing.assert_array_equal(np.stack([get("plane_vertical"), get("plane_horizontal")], 2), r.tpos)
+    np.testing.assert_array_equal(get("slip_distance"), r.landing_offset())       # NaN where not landed
+    assert np.nanmax(get("slip_distance")) > 0.1
+
+
+def test_pose_is_the_world_pose(recorded):
+    r = recorded.result
+    tf = _read(recorded.mcap, "/tf")
+    m = tf[-1][1]
+    assert (m.parent_frame_id, m.child_frame_id) == ("world", "vessel")
+    assert m.timestamp.seconds * 10**9 + m.timestamp.nanos == tf[-1][0] == round(r.t[-1] * 1e9)
+    x0, y0, psi = recorded.scenario.start_pose()
+    q = np.array([m.rotation.x, m.rotation.y, m.rotation.z, m.rotation.w])
+    from scipy.spatial.transform import Rotation
+    R = Rotation.from_quat(q).as_matrix()
+    np.testing.assert_allclose(R, rotation_matrix(r.x[-1, 3], r.x[-1, 4], psi + r.x[-1, 5]), atol=1e-12)
+    np.testing.assert_allclose([m.translation.x, m.translation.y, m.translation.z],
+                               [x0 + r.x[-1, 0], y0 + r.x[-1, 1], r.x[-1, 2]], atol=1e-12)   # heading 0
+
+
+def test_events_are_the_result_events_incidents_and_the_end(recorded):
+    r = recorded.result
+    ev = [(t, m) for t, m in _read(recorded.mcap, "/events")]
+    texts = [m.message for _, m in ev]
+    contact = [x for x in texts if not x.startswith(("incident", "run "))]
+    assert contact == [e.text() for e in r.events]
+    levels = {m.message: m.level for _, m in ev}
+    Log = message_class("foxglove.Log")
+    assert all(levels[e.text()] == Log.WARNING for e in r.slip_events())
+    incidents = {x.split(": ")[1].split(" at")[0]: float(x.split("t = ")[1].split(" s")[0])
+                 for x in texts if x.startswith("incident")}
+    expected = {k: v for k, v in r.incident_times().items() if v is not None and k != "contact loss"}
+    assert incidents.keys() == expected.keys() and all(abs(incidents[k] - expected[k]) < 1e-9 for k in expected)
+    assert texts[-1] == "run completed at t = 60.00 s"
+
+
+def test_landing_tracker_matches_the_whole_run_function(recorded):
+    r = recorded.result
+    rng = np.random.default_rng(0)
+    cuts = np.sort(rng.choice(np.arange(1, len(r.t)), 40, replace=False))
+    tr = LandingTracker(r.mode.shape[1])
+    parts = [tr(r.mode[a:b], r.tpos[a:b]) for a, b in zip(np.r_[0, cuts], np.r_[cuts, len(r.t)])]
+    np.testing.assert_array_equal(np.concatenate(parts), landing_offset(r.mode, r.tpos))
+
+
+def test_compiled_encoder_equals_the_readable_layout(recorded):
+    """The hot path (one compiled pass) writes the same bytes as the numpy reference of the layout."""
+    from types import SimpleNamespace
+
+    from boatland.record.columns import Columns
+    from boatland.record.mcap_log import NS, _Layout, block_values
+
+    r = recorded.result
+    k0, k1 = 600, 620
+    blk = SimpleNamespace(**{f: getattr(r, f)[k0:k1] for f in ("t", "x", "v", "F_exc", "thrust", "mode", "fn", "ft",
+                                                                 "needed", "available", "tpos")})
+    slip = r.landing_offset()[k0:k1]
+    eta = np.linspace(-1, 1, 20)
+    pose = (-16.925, 3.0, 0.3)
+    tr, q = world_pose(blk.x, pose)
+    c = Columns(**vars(blk), slip=slip, eta_bow=eta, translation=tr, quaternion=q)
+    lay = _Layout(2, {t: i for i, t in enumerate(TOPICS, 1)})
+    t_ns = np.rint(blk.t * NS).astype(np.int64)
+    np.testing.assert_array_equal(lay.encode(7, t_ns, blk, slip, eta, pose), lay.fill(7, t_ns, *block_values(c)))
+    tr, q = world_pose(np.zeros((1, 6)), (1.0, 2.0, np.pi / 2))
+    np.testing.assert_allclose(q[0], [0, 0, np.sqrt(0.5), np.sqrt(0.5)])
+
+
+def test_rerun_reads_the_log_as_pose_and_events(recorded):
+    """What 'rerun run.mcap' shows: the Foxglove schemas become Transform3D and TextLog."""
+    from rerun.chunk import McapReader
+
+    store = McapReader(str(recorded.mcap), timeline_type="duration").stream().collect()
+    cols = {}
+    for ch in store.stream():
+        cols.setdefault(ch.entity_path, set()).update(ch.to_record_batch().schema.names)
+    assert any(c.startswith("Transform3D:translation") for c in cols["/tf"])
+    assert any(c.startswith("TextLog:text") for c in cols["/events"])
+    assert any("boatland.FenderState" in c for c in cols["/fender/state"])
