@@ -106,10 +106,12 @@ def world_pose(x: np.ndarray, start_pose) -> tuple[np.ndarray, np.ndarray]:
 
 
 def bow_elevation(info) -> np.ndarray:
-    """Undisturbed wave elevation [m] (n_steps + 1,) at the bow (mean of the fender points) at rest,
+    """Wave elevation [m] (n_steps + 1,) at the bow (mean of the fender points) at rest — with the
+    pile's scattered wave when the trial has it (:func:`boatland.record.scene.sea_coefficients`) —
     ramped in as the excitation is (:func:`boatland.trial.simulate.wave_ramp`); zeros without waves."""
+    from boatland.record.scene import pile_of, sea_coefficients
     from boatland.trial.simulate import wave_ramp
-    from boatland.waves.synthesis import elevation_series
+    from boatland.waves.synthesis import harmonic_sum
 
     n, dt = info.n_steps, info.dt
     if info.waves is None:
@@ -119,4 +121,5 @@ def bow_elevation(info) -> np.ndarray:
     x0, y0, psi = info.start_pose
     gx, gy = x0 + np.cos(psi) * bx - np.sin(psi) * by, y0 + np.sin(psi) * bx + np.cos(psi) * by
     comps = info.waves.realise(info.scenario.simulation.seed, n * dt)
-    return elevation_series(comps, gx, gy, 0.0, dt, n + 1) * wave_ramp(info.scenario, dt, n)[::2]
+    coef = sea_coefficients(comps, gx, gy, pile_of(info.scenario, info.db, info.waves))
+    return harmonic_sum(comps.omega, coef, 0.0, dt, n + 1)[:, 0] * wave_ramp(info.scenario, dt, n)[::2]

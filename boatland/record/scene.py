@@ -10,6 +10,7 @@ hull and fender points, which are in the body frame and move with the vessel's t
 from __future__ import annotations
 
 import json
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -50,6 +51,7 @@ class Scene:
     components: object = None
     ramp: object = None
     notes: list = field(default_factory=list)
+    pile: tuple | None = None          # (radius, x, y, water depth) when its scattered wave is in the sea
 
     def patch_grid(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Global x, y (P,) of the sea-patch vertices and its triangles (T, 3), around the rest position."""
@@ -72,12 +74,40 @@ class Scene:
         cp = self.components
         if "_coef" not in self.__dict__:       # complex amplitudes at the patch vertices, computed once
             X, Y, _ = self.patch_grid()
-            phase = cp.phi[None, :] - cp.k[None, :] * (X[:, None] * np.cos(cp.theta)[None, :]
-                                                       + Y[:, None] * np.sin(cp.theta)[None, :])
-            object.__setattr__(self, "_coef", cp.a[None, :] * np.exp(1j * phase))
+            object.__setattr__(self, "_coef", sea_coefficients(cp, X, Y, self.pile))
         h = float(t[1] - t[0]) if len(t) > 1 else 1.0
         eta = harmonic_sum(cp.omega, self.__dict__["_coef"], float(t[0]), h, len(t))
         return eta * self.ramp(np.asarray(t))[:, None]
+
+
+def sea_coefficients(cp, X, Y, pile=None) -> np.ndarray:
+    r"""Complex elevation amplitudes (P, N) of the wave components at global points (X, Y):
+    :math:`a_i e^{i(\varphi_i - k_i(x\cos\theta_i + y\sin\theta_i))}` in the open sea; beside a pile
+    ``(radius, x, y, depth)`` the total (incident + scattered, MacCamy–Fuchs) field of each component
+    (:func:`boatland.waves.diffraction.cylinder_field`), 0 inside the pile."""
+    X = np.atleast_1d(np.asarray(X, dtype=float))
+    Y = np.atleast_1d(np.asarray(Y, dtype=float))
+    if pile is None:
+        phase = cp.phi[None, :] - cp.k[None, :] * (X[:, None] * np.cos(cp.theta)[None, :]
+                                                   + Y[:, None] * np.sin(cp.theta)[None, :])
+        return cp.a[None, :] * np.exp(1j * phase)
+    from boatland.waves.diffraction import cylinder_field
+
+    radius, px, py, depth = pile
+    out = np.zeros((X.size, cp.size), dtype=complex)
+    waves = cp.omega > 0
+    eta = cylinder_field(X - px, Y - py, np.zeros(X.size), cp.omega[waves], cp.theta[waves], radius, depth,
+                         paired=True).eta
+    at_pile = cp.a[waves] * np.exp(1j * (cp.phi[waves] - cp.k[waves] * (px * np.cos(cp.theta[waves])
+                                                                        + py * np.sin(cp.theta[waves]))))
+    out[:, waves] = np.nan_to_num(np.asarray(eta).reshape(X.size, -1)) * at_pile[None, :]
+    return out
+
+
+def pile_of(scenario, db, model) -> tuple | None:
+    """``(radius, x, y, depth)`` of the pile whose scattered wave the trial feels, or None."""
+    p = scenario.pile(db) if model is not None else None
+    return None if p is None else (p[0], p[1][0], p[1][1], float(getattr(model, "water_depth", math.inf)))
 
 
 def hull_triangles(vertices: np.ndarray, faces: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -126,7 +156,7 @@ def scene_from_trial(scenario, db, start_pose, contacts, *, waves=True) -> Scene
         ramp = _Ramp(t0, T)
     return Scene(hull_vertices=v, hull_triangles=tri, monopile=tuple(geo.get("monopile", (0.0, 0.0, 0.0))),
                  struts=geo.get("struts", []), fender_points=np.asarray(geo["fender_points"]),
-                 start_pose=tuple(start_pose), components=comps, ramp=ramp)
+                 start_pose=tuple(start_pose), components=comps, ramp=ramp, pile=pile_of(scenario, db, model))
 
 
 @dataclass(frozen=True)
