@@ -159,8 +159,34 @@ def run_campaign(campaign: Campaign, store_path: str | Path, *, loaders, executo
         store.add(row)
         if progress:
             progress(len(store.rows), total)
-    store.finish(case_statistics(campaign, store.table(), names))
+    store.finish(case_statistics(campaign, store.table(), names, screening=_screening(campaign, loaders)))
     return store
+
+
+def _screening(campaign: Campaign, loaders) -> np.ndarray | None:
+    """Wu screening's P(slip within the access) per case (seed 002 §3.2.1, §3.4, eq. 3.38, Rayleigh; the
+    improved hinge): the frequency-domain prediction beside the Monte Carlo result (seed 002 Tables
+    4.14–4.15). NaN for a case the screening cannot take (no spectral sea, no fender)."""
+    from boatland.freqdomain.screening import LandingSetup, sea_response
+    from boatland.trial.simulate import wave_start
+
+    out = np.full(len(campaign.cases), math.nan)
+    db = None
+    for case in campaign.cases:
+        try:
+            sc = campaign.base.replace(dict(case.values))
+            parts = getattr(sc.sea.waves, "parts", None) if sc.sea is not None else None
+            if not parts or sc.fender is None:
+                continue
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                db = db if db is not None else loaders[1](sc)
+                setup = LandingSetup.from_scenario(sc, db)
+                access = sc.simulation.duration - wave_start(sc)
+                out[case.index] = sea_response(db, setup, parts, access_duration=access).p_access
+        except Exception:  # noqa: BLE001 — a prediction that cannot be made stays NaN; the Monte Carlo stands
+            continue
+    return out
 
 
 def _execute(todo, args, executor, workers, scheduler, connect_timeout):
@@ -219,12 +245,14 @@ def _plan_json(campaign: Campaign) -> str:
                        "cases": [c.values for c in campaign.cases], "boatland": __version__}, default=str)
 
 
-def case_statistics(campaign: Campaign, table: np.ndarray, names: list[str], confidence: float = 0.95) -> np.ndarray:
+def case_statistics(campaign: Campaign, table: np.ndarray, names: list[str], confidence: float = 0.95,
+                    screening: np.ndarray | None = None) -> np.ndarray:
     """Per case and incident definition: P(incident within the access) with its Clopper–Pearson
     interval and the mean time to the incident with its exponential (χ²) interval; failed trials
-    (status −1) are left out and counted."""
+    (status −1) are left out and counted. ``screening``: the frequency-domain P(slip within the
+    access) per case, stored beside them (column ``screening: P(slip)``)."""
     cases = campaign.cases
-    fields = [("case", "i8"), ("label", "S200"), ("trials", "i8"), ("failed", "i8")]
+    fields = [("case", "i8"), ("label", "S200"), ("trials", "i8"), ("failed", "i8"), ("screening: P(slip)", "f8")]
     for c in campaign.axes:
         fields.append((f"axis: {c}", "f8"))
     for n in names:
@@ -238,6 +266,7 @@ def case_statistics(campaign: Campaign, table: np.ndarray, names: list[str], con
         out[i]["label"] = case.label().encode()[:200]
         out[i]["trials"] = len(rows)
         out[i]["failed"] = len(rows) - len(ok)
+        out[i]["screening: P(slip)"] = math.nan if screening is None else screening[i]
         for c, v in case.values.items():
             out[i][f"axis: {c}"] = float(v) if isinstance(v, (int, float)) else math.nan
         for n in names:

@@ -184,6 +184,7 @@ def test_report_writes_tables_and_figures(reference, tmp_path):
             "time_to_incident.png"} <= names
     header = (tmp_path / "rep" / "cases.csv").read_text().splitlines()[0]
     assert "slip > 0.05 m: P lo" in header and "first slip: mean time [s]" in header
+    assert "screening: P(slip) (frequency domain)" in header      # seed 002 Tables 4.14–4.15 side by side
 
 
 def test_an_unwritable_store_fails_before_any_trial(reference, tmp_path):
