@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import platform
 import time
 
 
@@ -15,3 +16,15 @@ def best_of(fn, n=5):
         out = fn()
         times.append(time.perf_counter() - t0)
     return min(times), out
+
+
+def cpu_name() -> str:
+    """The CPU model (for the figures' machine line)."""
+    try:
+        with open("/proc/cpuinfo", encoding="utf-8") as f:
+            for line in f:
+                if line.startswith("model name"):
+                    return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return platform.processor() or platform.machine()

@@ -7,8 +7,6 @@ in < 2 s after warm-up.
 
 from __future__ import annotations
 
-from _timing import best_of
-
 import datetime
 import os
 import platform
@@ -20,17 +18,9 @@ from boatland.model.hull import PanelCounts, WigleyCatamaran
 from boatland.model.hydrodb import HydroDB
 from boatland.model.pile_diffraction import pile_scattered_excitation
 from boatland.waves.diffraction import cylinder_field
+from _timing import best_of, cpu_name
 
 
-def cpu_name() -> str:
-    try:
-        with open("/proc/cpuinfo", encoding="utf-8") as f:
-            for line in f:
-                if line.startswith("model name"):
-                    return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or platform.machine()
 
 
 def goal_db() -> HydroDB:

@@ -8,8 +8,6 @@ with the static preload), slip margins, spectral moments (32 JONSWAP spectra), v
 
 from __future__ import annotations
 
-from _timing import best_of
-
 import datetime
 import os
 import platform
@@ -19,17 +17,9 @@ import numpy as np
 
 from boatland.freqdomain import LandingSetup, limiting_hs, screening_grid, slip_transfer, spectral_moments
 from boatland.scenario_check import default_scenario_path, load_checked
+from _timing import best_of, cpu_name
 
 
-def cpu_name() -> str:
-    try:
-        with open("/proc/cpuinfo", encoding="utf-8") as f:
-            for line in f:
-                if line.startswith("model name"):
-                    return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or platform.machine()
 
 
 def main():

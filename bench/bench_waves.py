@@ -7,8 +7,6 @@ figures go to bench/README.md by hand. Goal (issue 4): a 30-min excitation serie
 
 from __future__ import annotations
 
-from _timing import best_of
-
 import datetime
 import math
 import os
@@ -21,18 +19,10 @@ from boatland.model.seastate import SeaState, SpectrumPart, excitation_table, wa
 from boatland.waves.excitation import excitation_series
 from boatland.waves.realisation import Components
 from boatland.waves.synthesis import elevation_series
+from _timing import best_of, cpu_name
 
 
 
-def cpu_name() -> str:
-    try:
-        with open("/proc/cpuinfo", encoding="utf-8") as f:
-            for line in f:
-                if line.startswith("model name"):
-                    return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or platform.machine()
 
 
 def main():

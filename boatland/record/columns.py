@@ -12,28 +12,18 @@ from dataclasses import dataclass, fields
 import numpy as np
 
 from boatland.contact.fender import OPEN, STICK
+from boatland.trial.result import TrialSeries
 
 __all__ = ["Columns", "LandingTracker", "world_pose", "bow_elevation"]
 
 
 @dataclass(frozen=True, eq=False)
-class Columns:
-    """Rows of a trial (any consecutive range). Shapes as in :class:`~boatland.trial.result.Result`;
+class Columns(TrialSeries):
+    """Rows of a trial (any consecutive range): its :class:`~boatland.trial.result.TrialSeries` and
     ``slip`` (n, Nc) is the landing offset [m] (NaN while open / not yet caught), ``eta_bow`` (n,) the
     undisturbed wave elevation at the bow [m], ``translation`` (n, 3) and ``quaternion`` (n, 4, xyzw)
     the world pose of the reference point."""
 
-    t: np.ndarray
-    x: np.ndarray
-    v: np.ndarray
-    F_exc: np.ndarray
-    thrust: np.ndarray
-    mode: np.ndarray
-    fn: np.ndarray
-    ft: np.ndarray
-    needed: np.ndarray
-    available: np.ndarray
-    tpos: np.ndarray
     slip: np.ndarray
     eta_bow: np.ndarray
     translation: np.ndarray
