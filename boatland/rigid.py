@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-__all__ = ["rotation_matrix"]
+__all__ = ["rotation_matrix", "add_point_force"]
 
 
 @njit(cache=True)
@@ -25,3 +25,16 @@ def rotation_matrix(phi, theta, psi):
     R[2, 1] = ct * sf
     R[2, 2] = ct * cf
     return R
+
+
+@njit(cache=True, _nrt=False, forceinline=True)
+def add_point_force(rx, ry, rz, d0, d1, d2, f, out):
+    """Add to ``out`` (6) the generalised force of the force f·d acting at lever r from the reference
+    point: [f d; r × f d]."""
+    fx, fy, fz = f * d0, f * d1, f * d2
+    out[0] += fx
+    out[1] += fy
+    out[2] += fz
+    out[3] += ry * fz - rz * fy
+    out[4] += rz * fx - rx * fz
+    out[5] += rx * fy - ry * fx

@@ -52,7 +52,7 @@ from llvmlite import ir
 from numba import njit, types
 from numba.core.extending import intrinsic
 
-from boatland.rigid import rotation_matrix
+from boatland.rigid import add_point_force, rotation_matrix
 
 __all__ = ["stribeck", "contact_kinematics", "tangential_position", "contact_workspace", "contact_states",
            "contact_forces", "decide_modes", "OPEN", "STICK", "SLIP"]
@@ -249,11 +249,10 @@ def _dot_pairs(a, b):
 def _schur(Mt_inv, G, m, acc, target, MG, W, rhs):
     """MG = (M + A∞)⁻¹ G, W = Gᵀ MG and rhs = target − Gᵀ acc over the first m columns of G.
 
-    Written out (1–8 columns: a BLAS call costs more than its arithmetic here) in the summation order
-    of the OpenBLAS x86-64 kernels the solve called before — dgemm: fused multiply–adds in index
-    order; dgemv (and dgemm with one column): the pairwise 6-term sum of :func:`_dot_pairs` — so that
-    trajectories stay bit-identical. Symmetric landings amplify round-off into different slip
-    decisions (bench/README.md), so the order matters for reproducing earlier results.
+    Written out (1–8 columns: a BLAS call costs more than its arithmetic here) in one fixed summation
+    order — fused multiply–adds in index order, and the pairwise 6-term sum of :func:`_dot_pairs` for
+    single columns and Gᵀacc (the order of the OpenBLAS x86-64 kernels used before) — so results do
+    not depend on the BLAS build.
     """
     for k in range(m):
         for d in range(6):
@@ -262,18 +261,6 @@ def _schur(Mt_inv, G, m, acc, target, MG, W, rhs):
         for b in range(m):
             W[a, b] = _dot_fma(G[:, a], MG[:, b])
         rhs[a] = target[a] - _dot_pairs(G[:, a], acc)
-
-
-@njit(cache=True, _nrt=False, forceinline=True)
-def _gen_force(rx, ry, rz, d0, d1, d2, f, out):
-    """Add the generalised force of a force f·d at lever r to out (6)."""
-    fx, fy, fz = f * d0, f * d1, f * d2
-    out[0] += fx
-    out[1] += fy
-    out[2] += fz
-    out[3] += ry * fz - rz * fy
-    out[4] += rz * fx - rx * fz
-    out[5] += rx * fy - ry * fx
 
 
 @njit(cache=True, _nrt=False, forceinline=True)
@@ -328,7 +315,7 @@ def contact_forces(dt, N, TH, CF, DF, MU, sideways, mode, fdir, anchor, anchored
                 fn = 0.0
         f_n[c] = fn
         if fn > 0.0:
-            _gen_force(rx, ry, rz, N[c, 0], N[c, 1], N[c, 2], fn, F)
+            add_point_force(rx, ry, rz, N[c, 0], N[c, 1], N[c, 2], fn, F)
         if fn <= 0.0 or mode[c] == OPEN:
             continue
         if mode[c] == SLIP:
@@ -336,9 +323,9 @@ def contact_forces(dt, N, TH, CF, DF, MU, sideways, mode, fdir, anchor, anchored
                           MU[c, 0], MU[c, 1], MU[c, 2], MU[c, 3], MU[c, 4])
             fv, fh = mu * fn * fdir[c, 0], mu * fn * fdir[c, 1]
             f_t[c, 0], f_t[c, 1] = fv, fh
-            _gen_force(rx, ry, rz, 0.0, 0.0, 1.0, fv, F)
+            add_point_force(rx, ry, rz, 0.0, 0.0, 1.0, fv, F)
             if sideways:
-                _gen_force(rx, ry, rz, TH[c, 0], TH[c, 1], TH[c, 2], fh, F)
+                add_point_force(rx, ry, rz, TH[c, 0], TH[c, 1], TH[c, 2], fh, F)
             continue
         # stuck: one or two constraint columns
         idx[c] = m

@@ -40,7 +40,7 @@ from numba import njit
 
 from boatland.contact.fender import (STICK, contact_forces, contact_states, contact_workspace, decide_modes,
                                      tangential_position)
-from boatland.rigid import rotation_matrix
+from boatland.rigid import add_point_force, rotation_matrix
 
 __all__ = ["run_cummins", "STATUS_OK", "STATUS_NAN", "STATUS_RUNAWAY", "STATUS_MESSAGES"]
 
@@ -64,16 +64,10 @@ _A_NEXT = (0.5, 0.5, 1.0)  # indexed by stage − 1 (stage 0 is the step start)
 def _thrust(R, T, r_p, out):
     """Generalised force of a push T along the body x axis applied at body point r_p, with the body
     rotation ``R`` (exact rotation)."""
-    f0, f1, f2 = T * R[0, 0], T * R[1, 0], T * R[2, 0]
     rx = R[0, 0] * r_p[0] + R[0, 1] * r_p[1] + R[0, 2] * r_p[2]
     ry = R[1, 0] * r_p[0] + R[1, 1] * r_p[1] + R[1, 2] * r_p[2]
     rz = R[2, 0] * r_p[0] + R[2, 1] * r_p[1] + R[2, 2] * r_p[2]
-    out[0] += f0
-    out[1] += f1
-    out[2] += f2
-    out[3] += ry * f2 - rz * f1
-    out[4] += rz * f0 - rx * f2
-    out[5] += rx * f1 - ry * f0
+    add_point_force(rx, ry, rz, R[0, 0], R[1, 0], R[2, 0], T, out)
 
 
 @njit(cache=True, _nrt=False, forceinline=True)

@@ -85,22 +85,20 @@ def sea_coefficients(cp, X, Y, pile=None) -> np.ndarray:
     :math:`a_i e^{i(\varphi_i - k_i(x\cos\theta_i + y\sin\theta_i))}` in the open sea; beside a pile
     ``(radius, x, y, depth)`` the total (incident + scattered, MacCamy–Fuchs) field of each component
     (:func:`boatland.waves.diffraction.cylinder_field`), 0 inside the pile."""
-    X = np.atleast_1d(np.asarray(X, dtype=float))
-    Y = np.atleast_1d(np.asarray(Y, dtype=float))
+    from boatland.waves.synthesis import component_phasors
+
     if pile is None:
-        phase = cp.phi[None, :] - cp.k[None, :] * (X[:, None] * np.cos(cp.theta)[None, :]
-                                                   + Y[:, None] * np.sin(cp.theta)[None, :])
-        return cp.a[None, :] * np.exp(1j * phase)
+        return component_phasors(cp, X, Y)
     from boatland.waves.diffraction import cylinder_field
 
+    X = np.atleast_1d(np.asarray(X, dtype=float))
+    Y = np.atleast_1d(np.asarray(Y, dtype=float))
     radius, px, py, depth = pile
     out = np.zeros((X.size, cp.size), dtype=complex)
     waves = cp.omega > 0
     eta = cylinder_field(X - px, Y - py, np.zeros(X.size), cp.omega[waves], cp.theta[waves], radius, depth,
                          paired=True).eta
-    at_pile = cp.a[waves] * np.exp(1j * (cp.phi[waves] - cp.k[waves] * (px * np.cos(cp.theta[waves])
-                                                                        + py * np.sin(cp.theta[waves]))))
-    out[:, waves] = np.nan_to_num(np.asarray(eta).reshape(X.size, -1)) * at_pile[None, :]
+    out[:, waves] = np.nan_to_num(np.asarray(eta).reshape(X.size, -1)) * component_phasors(cp, px, py)[:, waves]
     return out
 
 

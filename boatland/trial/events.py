@@ -114,18 +114,16 @@ def landing_offset(mode, tpos) -> np.ndarray:
     """
     mode = np.asarray(mode)
     tpos = np.asarray(tpos)
-    n, nc = mode.shape
-    out = np.full((n, nc), np.nan)
+    out = np.full(mode.shape, np.nan)
+    nc = mode.shape[1]
     for c in range(nc):
-        touching = mode[:, c] != OPEN
-        spell = np.cumsum(np.r_[touching[:1], touching[1:] & ~touching[:-1]]) * touching  # 0 while open
-        stuck = np.nonzero(mode[:, c] == STICK)[0]
-        spells, first = np.unique(spell[stuck], return_index=True)
-        for sp, k0 in zip(spells, stuck[first]):  # k0: first stick of the spell = the landing position
-            ks = np.nonzero(spell == sp)[0]
-            ks = ks[ks >= k0]
-            d = tpos[ks, c] - tpos[k0, c]
-            out[ks, c] = np.hypot(d[:, 0], d[:, 1])
+        edges = np.flatnonzero(np.diff(np.r_[0, (mode[:, c] != OPEN).astype(np.int8), 0]))
+        for s0, s1 in zip(edges[::2], edges[1::2]):      # contact spells: steps [s0, s1) in touch
+            stuck = np.flatnonzero(mode[s0:s1, c] == STICK)
+            if stuck.size:
+                k0 = s0 + stuck[0]                        # first stick of the spell = the landing position
+                d = tpos[k0:s1, c] - tpos[k0, c]
+                out[k0:s1, c] = np.hypot(d[:, 0], d[:, 1])
     return out
 
 

@@ -45,7 +45,7 @@ import math
 
 import numpy as np
 
-from boatland.waves.synthesis import harmonic_sum
+from boatland.waves.synthesis import component_phasors, harmonic_sum
 
 __all__ = ["interpolate_excitation", "excitation_coefficients", "excitation_series", "ramp"]
 
@@ -105,10 +105,10 @@ def interpolate_excitation(omega_c, beta_c_deg, omega, beta_deg, X):
 
 
 def excitation_coefficients(components, omega, beta_deg, X, x0: float = 0.0, y0: float = 0.0,
-                            psi: float = 0.0):
+                            psi: float = 0.0, X_extra=None):
     r"""Complex force amplitudes of each component.
 
-    .. math:: c_{ji} = a_i X_j(\omega_i, \theta_i - \psi)\,
+    .. math:: c_{ji} = a_i \left(X_j(\omega_i, \theta_i - \psi) + X^{extra}_{ji}\right)
               e^{i(\varphi_i - k_i(x_0\cos\theta_i + y_0\sin\theta_i))}
 
 
@@ -116,8 +116,11 @@ def excitation_coefficients(components, omega, beta_deg, X, x0: float = 0.0, y0:
     """
     cp = components
     Xc, n_below, n_above = interpolate_excitation(cp.omega, np.degrees(cp.theta - psi), omega, beta_deg, X)
-    phase = cp.phi - cp.k * (x0 * np.cos(cp.theta) + y0 * np.sin(cp.theta))
-    return Xc * (cp.a * np.exp(1j * phase))[None, :], n_below, n_above
+    ph = component_phasors(cp, x0, y0)
+    c = Xc * ph
+    if X_extra is not None:
+        c = c + np.where((cp.omega > omega[-1])[None, :], 0.0, X_extra) * ph
+    return c, n_below, n_above
 
 
 def ramp(t, T_ramp: float) -> np.ndarray:
@@ -168,11 +171,7 @@ def excitation_series(components, omega, beta_deg, X, x0: float, y0: float, psi:
     n_below, n_above : int
         Components below / above the table's band (see :func:`interpolate_excitation`).
     """
-    c, n_below, n_above = excitation_coefficients(components, omega, beta_deg, X, x0, y0, psi)
-    if X_extra is not None:
-        cp = components
-        extra = np.where((cp.omega > omega[-1])[None, :], 0.0, X_extra)
-        c = c + extra * (cp.a * np.exp(1j * (cp.phi - cp.k * (x0 * np.cos(cp.theta) + y0 * np.sin(cp.theta)))))[None, :]
+    c, n_below, n_above = excitation_coefficients(components, omega, beta_deg, X, x0, y0, psi, X_extra)
     F = harmonic_sum(components.omega, c, t0, h, n)
     if T_ramp > 0:
         F *= ramp(t0 + h * np.arange(n), T_ramp)[:, None]

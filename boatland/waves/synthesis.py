@@ -27,7 +27,7 @@ import math
 import numba
 import numpy as np
 
-__all__ = ["REANCHOR", "harmonic_sum", "elevation", "elevation_series"]
+__all__ = ["REANCHOR", "harmonic_sum", "elevation", "elevation_series", "component_phasors"]
 
 #: Steps between exact re-evaluations of the phasors in :func:`harmonic_sum`.
 REANCHOR = 256
@@ -128,8 +128,15 @@ def elevation(components, x, y, t) -> np.ndarray:
     return out
 
 
+def component_phasors(components, x, y) -> np.ndarray:
+    r"""Complex amplitudes :math:`a_i e^{i(\varphi_i - k_i(x\cos\theta_i + y\sin\theta_i))}` of the
+    components at global points: (P, N) for P points (a scalar point gives P = 1)."""
+    cp = components
+    x = np.atleast_1d(np.asarray(x, dtype=float))[:, None]
+    y = np.atleast_1d(np.asarray(y, dtype=float))[:, None]
+    return cp.a * np.exp(1j * (cp.phi - cp.k * (x * np.cos(cp.theta) + y * np.sin(cp.theta))))
+
+
 def elevation_series(components, x: float, y: float, t0: float, h: float, n: int) -> np.ndarray:
     """Elevation [m] at one point (x, y) on the uniform grid t_n = t0 + n h, n < ``n`` (fast)."""
-    cp = components
-    c = cp.a * np.exp(1j * (cp.phi - cp.k * (x * np.cos(cp.theta) + y * np.sin(cp.theta))))
-    return harmonic_sum(cp.omega, c[None, :], t0, h, n)[:, 0]
+    return harmonic_sum(components.omega, component_phasors(components, x, y), t0, h, n)[:, 0]

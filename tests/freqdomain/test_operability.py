@@ -11,19 +11,10 @@ import numpy as np
 import pytest
 
 from boatland.errors import BoatlandInputError, BoatlandWarning
-from boatland.freqdomain import LandingSetup, ScatterTable, availability, read_scatter
+from boatland.freqdomain import ScatterTable, availability, read_scatter
 from boatland.model.seastate import SpectrumPart
-from boatland.scenario_check import default_scenario_path, load_checked
 
 SHIPPED = Path(__file__).resolve().parents[2] / "scenarios" / "scatter_north_sea.csv"
-
-
-@pytest.fixture(scope="module")
-def landing():
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        scenario, db, _ = load_checked(default_scenario_path())
-    return db, LandingSetup.from_scenario(scenario, db)
 
 
 @pytest.fixture(scope="module")

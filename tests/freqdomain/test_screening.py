@@ -4,8 +4,6 @@ limiting-Hs root, monotonicity in μ and thrust (seed 002 §4.1.1), bad input.""
 
 from __future__ import annotations
 
-import warnings
-
 import numpy as np
 import pytest
 
@@ -13,18 +11,9 @@ from boatland.errors import BoatlandInputError
 from boatland.freqdomain import (ACCEPT_PRESETS, LandingSetup, accept_probability, hinged_rao, incident_probability,
                                  limiting_hs, screening_grid, slip_transfer, spectral_moments)
 from boatland.hydro.builtin import load_builtin
-from boatland.scenario_check import default_scenario_path, load_checked
 
 TP = np.array([4.0, 6.0, 8.0, 11.0, 15.0])
 BETA = np.array([90.0, 135.0, 180.0])
-
-
-@pytest.fixture(scope="module")
-def landing():
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        scenario, db, _ = load_checked(default_scenario_path())
-    return db, LandingSetup.from_scenario(scenario, db)
 
 
 @pytest.fixture(scope="module")
