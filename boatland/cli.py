@@ -701,7 +701,7 @@ def _compare_open_sea(scenario, db, setup, args) -> None:
 def _cmd_screen(args) -> int:
     import numpy as np
 
-    from boatland.freqdomain import MODES, screening_grid
+    from boatland.freqdomain import screening_grid
 
     _freq_check(args)
     scenario, db = _freq_load(args.scenario)
@@ -741,8 +741,8 @@ def _cmd_screen(args) -> int:
                              statistics=table.statistics, method=table.method, access_duration=args.access)
             print(f"the scenario's own sea ({', '.join(f'Hs {p.Hs:g} m Tp {p.Tp:g} s' for p in parts)}): incident "
                   f"probability {r.p_access:.3g} per access ({r.p_cycle:.3g} per {r.cycle_period:g} s cycle); "
-                  "σ of the margins " + ", ".join(f"{m} {s / 1e3:.3g} kN" for m, s in zip(MODES, r.sigma))
-                  + "; capacities " + ", ".join(f"{a / 1e3:.3g} kN" for a in r.capacity[:4]))
+                  "σ of the margins " + ", ".join(f"{m} {s / 1e3:.3g} kN" for m, s in zip(r.names[:-1], r.sigma))
+                  + "; capacities " + ", ".join(f"{a / 1e3:.3g} kN" for a in r.capacity[:-1]))
         if table.captured.min() < 0.99:
             print(f"note: the database's band holds {100 * table.captured.min():.1f} % of the wave variance at "
                   f"Tp = {table.Tp[np.argmin(table.captured)]:g} s (the rest is left out)")

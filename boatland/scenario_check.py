@@ -23,10 +23,12 @@ from boatland.errors import BoatlandInputError, BoatlandWarning
 from boatland.hydro import read_hydro
 from boatland.hydro.builtin import BUILTIN, load_builtin
 from boatland.model.hydrodb import HydroDB
+from boatland.model.landed import check_memory
 from boatland.model.scenario import Scenario, ScenarioWarning, load_scenario
 from boatland.model.scenario_checks import ScenarioCheck
 from boatland.model.scenario_schema import json_schema
 from boatland.model.tomlspec import SpecError
+from boatland.trial.simulate import prepare_memory
 
 __all__ = ["CheckReport", "DEFAULT_SCENARIO", "check_file", "default_scenario_path", "load", "load_checked",
            "resolve_database", "schema_text"]
@@ -138,6 +140,14 @@ def _summary(s: Scenario) -> str:
     return ", ".join(parts)
 
 
+def _with_memory_check(scenario: Scenario, db: HydroDB, check: ScenarioCheck) -> ScenarioCheck:
+    """Add the radiation memory's check at the landed natural modes (:func:`boatland.model.landed.check_memory`)."""
+    memory = prepare_memory(scenario, db)
+    mc = check_memory(scenario, db, memory, scenario.time_step(db))
+    return ScenarioCheck(problems=check.problems + mc.problems, warnings=check.warnings + mc.warnings,
+                         notes=check.notes + mc.notes)
+
+
 def check_file(path: str | Path) -> CheckReport:
     """Validate a scenario file against its database without running it; never raises for user mistakes."""
     source = str(path)
@@ -147,6 +157,8 @@ def check_file(path: str | Path) -> CheckReport:
             scenario = load(path)
             db = resolve_database(scenario)
             check = scenario.check_against(db)
+            if check.ok and db.M is not None:
+                check = _with_memory_check(scenario, db, check)
         except SpecError as exc:
             return CheckReport(ok=False, problems=tuple(exc.problems), warnings=(), notes=(), text=str(exc))
         except BoatlandInputError as exc:

@@ -6,7 +6,8 @@ File format (``scenarios/campaigns/*.toml``)::
     scenario = "../ctv_landing.toml"     # the base scenario, relative to this file
     seeds = 8                            # trials per case (wave seeds)
     master_seed = 20261122               # every trial's seed derives from it (SeedSequence)
-    duration = 600.0                     # [s] the access: simulation.duration of every trial
+    duration = 1800.0                    # [s] the access: exposure to the full sea, after the settling
+                                         # (thrust on) and the waves' start-up ramp
 
     [set]                                # fixed changes to the base scenario (key paths)
     "radiation.method" = "state_space"
@@ -41,6 +42,7 @@ import numpy as np
 
 from boatland.model.scenario import Scenario
 from boatland.model.tomlspec import Key, Problems, SpecError, Table, Vector, parse_toml_file, validate
+from boatland.trial.simulate import exposure_start
 
 __all__ = ["Campaign", "Case", "TrialSpec", "load_campaign", "trial_seed", "CAMPAIGN_SCHEMA"]
 
@@ -50,7 +52,8 @@ CAMPAIGN_SCHEMA = Table({
     "scenario": Key(str, required=True, doc="base scenario file, relative to the campaign file"),
     "seeds": Key(int, required=True, ge=1, le=100000, doc="trials (wave seeds) per case"),
     "master_seed": Key(int, default=0, ge=0, doc="master seed of every trial's wave seed"),
-    "duration": Key((int, float), gt=0.0, doc="[s] access duration (simulation.duration of every trial)"),
+    "duration": Key((int, float), gt=0.0, doc="[s] access duration: the exposure to the full sea; every trial "
+                                              "runs its settling and wave ramp first, then this long"),
     "set": Table({}, optional=True, doc="fixed changes to the base scenario: key path → value"),
     "axes": Table({}, optional=True, doc="swept key paths → lists of values"),
     "incidents": Table({
@@ -107,6 +110,9 @@ class Campaign:
     keep_series : tuple of int
     document : dict
         The campaign file as parsed (its digest identifies the campaign in a store).
+    access : float or None
+        The exposure of every trial to the full sea [s] (``duration``); None: the base scenario's
+        duration is the whole run.
     """
 
     name: str
@@ -119,6 +125,7 @@ class Campaign:
     master_seed: int
     keep_series: tuple
     document: dict
+    access: float | None = None
 
     @property
     def cases(self) -> list[Case]:
@@ -138,7 +145,10 @@ class Campaign:
         """The trial's scenario: the base with its case's axis values and its seed."""
         changes = dict(self.cases[spec.case].values)
         changes["simulation.seed"] = spec.seed
-        return self.base.replace(changes)
+        scenario = self.base.replace(changes)
+        if self.access is not None:
+            scenario = scenario.replace({"simulation.duration": exposure_start(scenario) + self.access})
+        return scenario
 
     def digest(self) -> str:
         """SHA-256 of the campaign file's content and of the base scenario's (what a store belongs to)."""
@@ -179,8 +189,6 @@ def load_campaign(path: str | Path, *, load_scenario) -> Campaign:
     except SpecError as exc:
         raise SpecError(str(path), [("scenario", f"the base scenario has problems:\n{exc}")]) from None
     changes: dict[str, Any] = dict(raw_set)
-    if "duration" in data:
-        changes["simulation.duration"] = float(data["duration"])
     inc = data.get("incidents") or {}
     for key in ("slip_distance", "roll_limit_deg"):
         if key in inc:
@@ -206,7 +214,8 @@ def load_campaign(path: str | Path, *, load_scenario) -> Campaign:
         raise SpecError(str(path), [("store.keep_series", f"trial numbers {bad} do not exist (0 … {n_trials - 1})")])
     return Campaign(name=data["name"], description=data.get("description", ""), source=str(path),
                     scenario_path=base_path, base=base, axes=axes, seeds=int(data["seeds"]),
-                    master_seed=int(data.get("master_seed", 0)), keep_series=keep, document=doc)
+                    master_seed=int(data.get("master_seed", 0)), keep_series=keep, document=doc,
+                    access=float(data["duration"]) if "duration" in data else None)
 
 
 def _apply(scenario: Scenario, changes: dict, problems: Problems, where: str) -> Scenario | None:

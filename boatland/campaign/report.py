@@ -102,11 +102,11 @@ def _write_tables(rows: list[list], header: list[str], out: Path, stem: str, tit
 
 
 def _cases_tables(stats, names, out):
-    header = ["case", "label", "trials", "failed", "screening: P(slip) (frequency domain)"]
+    header = ["case", "label", "trials", "failed", "screening: P(slip) (frequency domain)", "screening: note"]
     for n in names:
         header += [f"{n}: count", f"{n}: P", f"{n}: P lo", f"{n}: P hi", f"{n}: mean time [s]",
                    f"{n}: mean lo", f"{n}: mean hi"]
-    cols = ["case", "label", "trials", "failed", "screening: P(slip)"] + [f"{n}: {k}" for n in names
+    cols = ["case", "label", "trials", "failed", "screening: P(slip)", "screening: note"] + [f"{n}: {k}" for n in names
                                                    for k in ("count", "P", "P lo", "P hi", "mean time", "mean lo", "mean hi")]
     rows = [[r[c] for c in cols] for r in stats]
     return _write_tables(rows, header, out, "cases", "Per case: incident probability (Clopper–Pearson 95 %) "

@@ -27,6 +27,7 @@ from boatland.campaign.plan import Campaign, TrialSpec, load_campaign
 from boatland.campaign.stats import clopper_pearson, exponential_mean_interval
 from boatland.campaign.store import INCIDENT_PREFIX, CampaignStore
 from boatland.errors import BoatlandInputError
+from boatland.trial.simulate import exposure_start
 
 __all__ = ["run_campaign", "execute_trial", "incident_names", "case_statistics"]
 
@@ -50,14 +51,14 @@ def _context(source: str, loaders):
     if key not in _CACHE:
         campaign = load_campaign(source, load_scenario=load_scenario)
         _CACHE.clear()
-        _CACHE[key] = {"campaign": campaign, "db": {}, "memory": {}}
+        _CACHE[key] = {"campaign": campaign, "db": {}, "memory": {}, "checked": set()}
     return _CACHE[key]
 
 
 def execute_trial(source: str, spec: TrialSpec, loaders, keep_dir: str | None = None) -> dict:
     """Run one trial of the campaign file ``source`` and return its summary row (never raises for a
     failing trial: the row carries status −1 and the error)."""
-    from boatland.trial.simulate import BlowUpError, prepare_memory, simulate, wave_start
+    from boatland.trial.simulate import BlowUpError, check_radiation, prepare_memory, simulate
 
     wall0 = time.perf_counter()
     row = {"trial": spec.trial, "case": spec.case, "seed_index": spec.seed_index, "seed": spec.seed}
@@ -76,12 +77,14 @@ def execute_trial(source: str, spec: TrialSpec, loaders, keep_dir: str | None = 
             mkey = (dbkey, rad.method, rad.memory, rad.tail, rad.taper)
             if mkey not in ctx["memory"]:
                 ctx["memory"][mkey] = prepare_memory(scenario, db)
+            if spec.case not in ctx["checked"]:   # the memory damps this case's landed modes (once per case)
+                check_radiation(scenario, db, ctx["memory"][mkey], scenario.time_step(db))
+                ctx["checked"].add(spec.case)
             try:
                 result = simulate(scenario, db, memory=ctx["memory"][mkey])
             except BlowUpError as exc:
                 result = exc.result
-        t0 = wave_start(scenario)
-        row.update(_summary_row(result, t0, scenario.simulation.duration, names))
+        row.update(_summary_row(result, result.exposure_from, scenario.simulation.duration, names))
         if keep_dir is not None and spec.trial in campaign.keep_series:
             Path(keep_dir).mkdir(parents=True, exist_ok=True)
             result.to_hdf5(Path(keep_dir) / f"trial_{spec.trial:06d}.h5")
@@ -159,34 +162,47 @@ def run_campaign(campaign: Campaign, store_path: str | Path, *, loaders, executo
         store.add(row)
         if progress:
             progress(len(store.rows), total)
-    store.finish(case_statistics(campaign, store.table(), names, screening=_screening(campaign, loaders)))
+    p_fd, why = _screening(campaign, loaders)
+    store.finish(case_statistics(campaign, store.table(), names, screening=p_fd, screening_notes=why))
     return store
 
 
-def _screening(campaign: Campaign, loaders) -> np.ndarray | None:
-    """Wu screening's P(slip within the access) per case (seed 002 §3.2.1, §3.4, eq. 3.38, Rayleigh; the
-    improved hinge): the frequency-domain prediction beside the Monte Carlo result (seed 002 Tables
-    4.14–4.15). NaN for a case the screening cannot take (no spectral sea, no fender)."""
+def _screening(campaign: Campaign, loaders) -> tuple[np.ndarray, list[str]]:
+    """The frequency-domain screening's P(slip within the access) per case (Wu 2014 as in Grøtting 2015
+    §3.2.1, §3.4, eq. 3.38, Rayleigh; the improved landing — each contact on its own, the fender's
+    normal and shear laws, the pile's scattered wave when the trials have it), computed from each case's
+    own scenario and database: the prediction beside the Monte Carlo result (Grøtting 2015 Tables
+    4.14–4.15). Returns the probabilities (NaN where none) and, per case, why there is none ("" where
+    there is one)."""
     from boatland.freqdomain.screening import LandingSetup, sea_response
-    from boatland.trial.simulate import wave_start
 
     out = np.full(len(campaign.cases), math.nan)
-    db = None
+    why = [""] * len(campaign.cases)
+    dbs: dict = {}
     for case in campaign.cases:
         try:
             sc = campaign.base.replace(dict(case.values))
             parts = getattr(sc.sea.waves, "parts", None) if sc.sea is not None else None
-            if not parts or sc.fender is None:
+            if not parts:
+                why[case.index] = "no spectral sea (the screening needs JONSWAP/PM/TMA parts)"
+                continue
+            if sc.fender is None:
+                why[case.index] = "no fender"
                 continue
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")
-                db = db if db is not None else loaders[1](sc)
+                key = str(sc.vessel.database_path or sc.vessel.database)
+                if key not in dbs:
+                    dbs[key] = loaders[1](sc)
+                db = dbs[key]
                 setup = LandingSetup.from_scenario(sc, db)
-                access = sc.simulation.duration - wave_start(sc)
-                out[case.index] = sea_response(db, setup, parts, access_duration=access).p_access
-        except Exception:  # noqa: BLE001 — a prediction that cannot be made stays NaN; the Monte Carlo stands
-            continue
-    return out
+                access = campaign.access if campaign.access is not None else \
+                    sc.simulation.duration - exposure_start(sc)
+                out[case.index] = sea_response(db, setup, parts, access_duration=access,
+                                               water_depth=getattr(sc.wave_model(db), "water_depth", None)).p_access
+        except Exception as exc:  # noqa: BLE001 — the report says why; the Monte Carlo stands
+            why[case.index] = f"{type(exc).__name__}: {exc}"[:190]
+    return out, why
 
 
 def _execute(todo, args, executor, workers, scheduler, connect_timeout):
@@ -246,13 +262,15 @@ def _plan_json(campaign: Campaign) -> str:
 
 
 def case_statistics(campaign: Campaign, table: np.ndarray, names: list[str], confidence: float = 0.95,
-                    screening: np.ndarray | None = None) -> np.ndarray:
+                    screening: np.ndarray | None = None, screening_notes: list[str] | None = None) -> np.ndarray:
     """Per case and incident definition: P(incident within the access) with its Clopper–Pearson
     interval and the mean time to the incident with its exponential (χ²) interval; failed trials
     (status −1) are left out and counted. ``screening``: the frequency-domain P(slip within the
-    access) per case, stored beside them (column ``screening: P(slip)``)."""
+    access) per case, stored beside them (column ``screening: P(slip)``), and why it is missing where it
+    is (``screening: note``)."""
     cases = campaign.cases
-    fields = [("case", "i8"), ("label", "S200"), ("trials", "i8"), ("failed", "i8"), ("screening: P(slip)", "f8")]
+    fields = [("case", "i8"), ("label", "S200"), ("trials", "i8"), ("failed", "i8"), ("screening: P(slip)", "f8"),
+              ("screening: note", "S200")]
     for c in campaign.axes:
         fields.append((f"axis: {c}", "f8"))
     for n in names:
@@ -267,6 +285,7 @@ def case_statistics(campaign: Campaign, table: np.ndarray, names: list[str], con
         out[i]["trials"] = len(rows)
         out[i]["failed"] = len(rows) - len(ok)
         out[i]["screening: P(slip)"] = math.nan if screening is None else screening[i]
+        out[i]["screening: note"] = ("" if screening_notes is None else screening_notes[i]).encode()[:200]
         for c, v in case.values.items():
             out[i][f"axis: {c}"] = float(v) if isinstance(v, (int, float)) else math.nan
         for n in names:

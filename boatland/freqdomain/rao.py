@@ -6,8 +6,10 @@ Free vessel (seed 000 eq. 3.29–3.31):
     Z(\omega)\,\hat x = X(\omega, \beta), \qquad
     Z(\omega) = -\omega^2\left(M + A(\omega)\right) + i\omega\left(B(\omega) + B_{add}\right) + C .
 
-Vessel hinged at body points :math:`r_c` (seed 002 §3.2.1, eq. 3.1–3.12, after Wu 2014): the
-translation of each point is zero, the rotations are free. With the 3 × 6 map of the motions to the
+Vessel on its landing — "hinged" at body points :math:`r_c` (seed 002 §3.2.1, eq. 3.1–3.12, after Wu
+2014: the translation of each point is zero, the rotations are free), or held there by the fender's
+springs (the compliant rubber of :mod:`boatland.contact.fender`; the general linear restraint is
+:class:`boatland.model.landed.ContactLaw`). With the 3 × 6 map of the motions to the
 translation of a point,
 
 .. math:: G_c\,\hat x = \hat x_{1:3} + \hat\theta \times r_c = [\,I \;\; -S(r_c)\,]\,\hat x,
@@ -70,12 +72,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from boatland.model.hydrodb import HydroDB, skew
+from boatland.model.hydrodb import HydroDB
+from boatland.model.landed import ContactLaw, point_map, preload_stiffness, solve_saddle, static_preload, tangents
 from boatland.model.seastate import excitation_table
 from boatland.waves.excitation import interpolate_excitation
 
 __all__ = ["HingedResponse", "excitation_force", "free_rao", "hinged_rao", "impedance", "point_map",
-           "preload_stiffness", "radiation_coefficients"]
+           "preload_stiffness", "radiation_coefficients", "static_preload"]
 
 
 def _omega(db: HydroDB, omega) -> np.ndarray:
@@ -190,66 +193,6 @@ def free_rao(db: HydroDB, omega, beta_deg=None, *, additional_damping=None) -> n
     return np.linalg.solve(Z, np.swapaxes(X, 1, 2)).swapaxes(1, 2)
 
 
-def point_map(point) -> np.ndarray:
-    r"""3 × 6 map :math:`G = [I \;\; -S(r)]` of the motions to the (small) translation of body point ``r``:
-    :math:`G x = x_{1:3} + x_{4:6} \times r` (seed 002 eq. 3.7–3.8). :math:`G^\top f` is the
-    generalised force of a force f at r."""
-    G = np.zeros((3, 6))
-    G[:, :3] = np.eye(3)
-    G[:, 3:] = -skew(point)
-    return G
-
-
-def _tangents(n: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """(t_v, t_h) of a plane with unit normal n: t_h = e_z × n / |…|, t_v = n × t_h (vertical when n
-    is horizontal) — the axes of :mod:`boatland.contact.fender`."""
-    th = np.cross([0.0, 0.0, 1.0], n)
-    if np.linalg.norm(th) < 1e-9:
-        raise ValueError(f"normal {n} is vertical: the contact plane of a strut is vertical (horizontal normal)")
-    th /= np.linalg.norm(th)
-    return np.cross(n, th), th
-
-
-def preload_stiffness(thrust: float, thrust_position, forces, points) -> np.ndarray:
-    r"""Linearised generalised force of the static loads as the vessel rotates: :math:`\delta F = K_g x`.
-
-    The time domain applies the thrust T along the vessel's own x axis at body point :math:`r_T`
-    (a follower force, seed 002 §3.4) and the contact forces along fixed (local-frame) directions at
-    the rotating fender points :math:`R(\theta) r_c`. To first order in the rotations θ, the static
-    values :math:`T` and :math:`J^0_c` then add
-
-    .. math::
-        K_g = \begin{bmatrix} 0 & -T\,S(e_x) \\ 0 & -S(r_T \times T e_x) + \sum_c S(J^0_c)\,S(r_c) \end{bmatrix}
-
-    (forces :math:`T\,\theta \times e_x` — seed 002 eq. 3.62–3.63 — and moments
-    :math:`\theta \times (r_T \times T e_x) + \sum_c (\theta \times r_c) \times J^0_c`). In the
-    frequency domain it enters as the stiffness :math:`-K_g`.
-
-    Parameters
-    ----------
-    thrust : float
-        Push T [N] along the body x axis.
-    thrust_position : array_like, shape (3,)
-        Its body point r_T [m].
-    forces : array_like, shape (Np, 3)
-        Static contact forces on the vessel J⁰_c, local axes [N].
-    points : array_like, shape (Np, 3)
-        Contact points r_c, body frame [m].
-
-    Returns
-    -------
-    K_g : ndarray, shape (6, 6)
-        [N/m, N/rad, N m/rad]; acts on the rotations only (columns 4–6).
-    """
-    ex = np.array([1.0, 0.0, 0.0])
-    Kg = np.zeros((6, 6))
-    Kg[:3, 3:] = -thrust * skew(ex)
-    Kg[3:, 3:] = -skew(np.cross(np.asarray(thrust_position, dtype=float), thrust * ex))
-    for f, r in zip(np.atleast_2d(forces), np.atleast_2d(points)):
-        Kg[3:, 3:] += skew(f) @ skew(r)
-    return Kg
-
-
 @dataclass(frozen=True, eq=False)
 class HingedResponse:
     r"""Motions and hinge reactions of the hinged vessel per unit wave amplitude (exp(+iωt)), and the
@@ -264,7 +207,9 @@ class HingedResponse:
     points : ndarray, shape (Np, 3)
         Hinge points, body frame [m].
     normals : ndarray, shape (Np, 3) or None
-        Contact-plane normals (landing → vessel) when given.
+        Contact normals (landing → vessel) when given.
+    law : ContactLaw
+        What each point restrains (springs, pins).
     x : ndarray of complex, shape (Nw, Nβ, 6)
         Motions [m/m, rad/m].
     J : ndarray of complex, shape (Nw, Nβ, Np, 3)
@@ -279,6 +224,7 @@ class HingedResponse:
     beta_deg: np.ndarray
     points: np.ndarray
     normals: np.ndarray | None
+    law: ContactLaw
     x: np.ndarray
     J: np.ndarray
     x_static: np.ndarray
@@ -303,7 +249,7 @@ class HingedResponse:
         """
         if self.normals is None:
             raise ValueError("no contact normals were given to hinged_rao")
-        axes = np.stack([np.stack([n, *_tangents(n)]) for n in self.normals])  # (Np, 3, 3): rows n, t_v, t_h
+        axes = np.stack([np.stack([n, *tangents(n)]) for n in self.normals])  # (Np, 3, 3): rows n, t_v, t_h
         if static:
             return np.einsum("pak,pk->pa", axes, self.J_static)
         return np.einsum("pak,wbpk->wbpa", axes, self.J)
@@ -312,98 +258,44 @@ class HingedResponse:
 def _per_point(value, n_points: int, name: str) -> np.ndarray:
     a = np.asarray(value, dtype=float)
     a = np.broadcast_to(a, (n_points,)) if a.ndim == 0 else a.reshape(-1)
-    if a.shape != (n_points,) or np.any(a < 0) or not np.all(np.isfinite(a)):
-        raise ValueError(f"{name} must be one finite value ≥ 0 or one per point ({n_points}), got {value!r}")
+    if a.shape != (n_points,) or np.any(a < 0) or np.any(np.isnan(a)):
+        raise ValueError(f"{name} must be one value ≥ 0 or one per point ({n_points}), got {value!r}")
     return np.array(a)
 
 
-def _solve_saddle(Z: np.ndarray, Cmat: np.ndarray, F: np.ndarray) -> tuple[np.ndarray, np.ndarray, float]:
-    r"""Solve :math:`[Z\; -C^\top;\ C\; 0]\,[x; \lambda] = [F; 0]` for one frequency, several right-hand
-    sides F (6, Nb). Minimum-norm (SVD) so that redundant constraints share their reaction; the blocks
-    are balanced first (Z ~ 1e5–1e8, C ~ 1–10). Returns x (6, Nb), λ (m, Nb) and the relative residual."""
-    m = Cmat.shape[0]
-    s = float(np.max(np.abs(Z)))
-    K = np.zeros((6 + m, 6 + m), dtype=complex)
-    K[:6, :6] = Z
-    K[:6, 6:] = -s * Cmat.T
-    K[6:, :6] = s * Cmat
-    rhs = np.zeros((6 + m, F.shape[1]), dtype=complex)
-    rhs[:6] = F
-    sol = np.linalg.lstsq(K, rhs, rcond=None)[0]
-    res = np.linalg.norm(K @ sol - rhs) / max(np.linalg.norm(rhs), 1e-300)
-    return sol[:6], s * sol[6:], float(res)
-
-
-def _reactions(lam, x, Tt, gn, N, kc):
-    """Reactions J (..., Np, 3) from the multipliers λ (..., m) and the motions x (..., 6): the pinned
-    directions T_c λ_c, and with a spring normal (``kc`` = per point k + iωd, else None) its force
-    −(k + iωd) n nᵀ G x."""
-    n_p = len(Tt)
-    J = np.empty(x.shape[:-1] + (n_p, 3), dtype=complex)
-    row = 0
-    for c in range(n_p):
-        r = Tt[c].shape[0]
-        J[..., c, :] = lam[..., row:row + r] @ Tt[c]
-        if kc is not None:
-            J[..., c, :] -= (kc[c] * (x @ gn[c]))[..., None] * N[c]
-        row += r
-    return J
-
-
-def _static_preload(C, Cmat, Tt, gn, N, k, P, thrust, rT):
-    r"""Static equilibrium on the hinge(s) under the follower thrust: (x⁰, J⁰, K_g(J⁰)).
-
-    :math:`(C + \sum_c k_c G_c^\top n_c n_c^\top G_c - K_g(J^0))\,x^0 = T[e_x;\ r_T\times e_x] + \sum_c G_c^\top J^0_c`
-    with the pins :math:`\mathcal T x^0 = 0`: the preload's own stiffness tilts the thrust and turns
-    the contact moments by the static rotation. A fixed point in J⁰ (K_g is O(T/C₅₅) of the
-    restoring: a few iterations). ``k`` (Np,) the normal springs, None for rigid hinges.
-    """
-    F_T = thrust * np.concatenate([[1.0, 0.0, 0.0], np.cross(rT, [1.0, 0.0, 0.0])])
-    Z0 = C if k is None else C + sum(k[c] * np.outer(gn[c], gn[c]) for c in range(len(Tt)))
-    J0 = np.zeros((len(Tt), 3))
-    Kg = np.zeros((6, 6))
-    for _ in range(50):
-        xs, ls, res = _solve_saddle((Z0 - Kg).astype(complex), Cmat, F_T[:, None].astype(complex))
-        if res > 1e-8:
-            raise ValueError(f"the hinge cannot hold the thrust statically (relative residual {res:.2g}): a force "
-                             "or moment about a direction with neither restoring nor a pin — e.g. a yaw moment "
-                             "about a single fender point, or a normal without a spring")
-        x0 = xs[:, 0].real
-        J_new = _reactions(ls[:, 0].real, x0, Tt, gn, N, k).real
-        done = np.max(np.abs(J_new - J0)) <= 1e-12 * np.max(np.abs(J_new))
-        J0 = J_new
-        Kg = preload_stiffness(thrust, rT, J0, P)
-        if done:
-            return x0, J0, Kg
-    raise ValueError("the static equilibrium under the thrust did not converge: the preload's geometric stiffness "
-                     "is comparable with the restoring (thrust far too large for this hinge)")
-
-
 def hinged_rao(db: HydroDB, omega, points, *, beta_deg=None, normal=None, stiffness=None, damping=None,
-               thrust: float = 0.0, thrust_position=(0.0, 0.0, 0.0), additional_damping=None) -> HingedResponse:
-    r"""Motions and hinge reactions of the vessel pinned at its fender point(s) (seed 002 §3.2.1).
+               shear_stiffness=None, shear_damping=None, sideways: bool = True, thrust: float = 0.0,
+               thrust_position=(0.0, 0.0, 0.0), additional_damping=None) -> HingedResponse:
+    r"""Motions and contact forces of the vessel on its landing (Grøtting 2015 §3.2.1 after Wu 2014).
 
-    Solves (module docstring; seed 002 eq. 3.1–3.12)
+    Solves (:mod:`boatland.model.landed`; Grøtting 2015 eq. 3.1–3.12)
 
     .. math::
-        \begin{bmatrix} Z - K_g + \sum_c (k_c + i\omega d_c) G_c^\top n_c n_c^\top G_c & -\mathcal T^\top \\
+        \begin{bmatrix} Z - K_g + \sum (k + i\omega c)\, G_c^\top d\,d^\top G_c & -\mathcal T^\top \\
                         \mathcal T & 0 \end{bmatrix}
         \begin{bmatrix} \hat x \\ \hat\lambda \end{bmatrix} =
         \begin{bmatrix} X \\ 0 \end{bmatrix}
 
-    with :math:`Z = -\omega^2 (M + A) + i\omega (B + B_{add}) + C`, :math:`G_c = [I\;\; -S(r_c)]` and
-    :math:`\mathcal T` the pinned directions of each point: all three for a rigid hinge (seed 002),
-    the two tangential ones :math:`(t_v, t_h)` of the contact plane when the normal carries a
-    spring–damper :math:`(k_c, d_c)`. The reaction on the vessel is
-    :math:`\hat J_c = T_c\hat\lambda_c - (k_c + i\omega d_c)\, n_c n_c^\top G_c \hat x`.
+    with :math:`Z = -\omega^2 (M + A) + i\omega (B + B_{add}) + C`, :math:`G_c = [I\;\; -S(r_c)]`, the
+    springs (k, c) along the directions d each contact restrains and :math:`\mathcal T` its pinned
+    directions:
 
-    With a ``thrust`` T, the static hinge problem gives the preload :math:`x^0, J^0` — the same
-    system at ω = 0 with :math:`Z = C - K_g(J^0)` (solved as a fixed point) and the follower thrust
-    :math:`T[e_x;\ r_T \times e_x]` as load: the static vertical force of seed 002 eq. 3.56–3.61, here
-    for any hinge, plus the tilt of the thrust by the static pitch that §3.4 neglects — and the
-    dynamic system is linearised about it with :math:`K_g` = :func:`preload_stiffness` (the follower
-    force :math:`T\theta\times e_x` of seed 002 eq. 3.62–3.63 and the turning of the static forces'
-    moments). Otherwise the levers are those of the unrotated vessel: the static rotation, O(T/C₅₅),
+    - no ``stiffness``, ``damping``, ``shear_stiffness``: a rigid hinge, every point pinned in all three
+      directions (Wu 2014, Grøtting 2015);
+    - ``stiffness``/``damping``: the normal carries the fender's spring–damper; the tangential
+      directions :math:`t_v = e_z, t_h = e_z\times n` are pinned (the rigid stick of Ferreira González
+      2023), or — with a finite ``shear_stiffness`` — carry the rubber's shear spring and
+      ``shear_damping`` (the compliant fender: no pin at all, roll is not locked); ``sideways=False``
+      leaves :math:`t_h` free.
+
+    The reaction on the vessel is :math:`\hat J_c = \sum_{pins} \hat\lambda\,d - \sum_{springs}
+    (k + i\omega c)\,d\,d^\top G_c \hat x`.
+
+    With a ``thrust`` T, the static problem gives the preload :math:`x^0, J^0`
+    (:func:`boatland.model.landed.static_preload`: the same system at ω = 0 with the follower thrust
+    :math:`T[e_x;\ r_T \times e_x]` as load) and the dynamic system is linearised about it with
+    :math:`K_g` = :func:`preload_stiffness` (the follower force :math:`T\theta\times e_x` of Grøtting
+    2015 eq. 3.62–3.63 and the turning of the static forces' moments). The static rotation, O(T/C₅₅),
     moves the fender point by θ⁰ × r (1.4 cm for ctv24's bow point under 80 kN), which is neglected.
 
     Parameters
@@ -413,18 +305,20 @@ def hinged_rao(db: HydroDB, omega, points, *, beta_deg=None, normal=None, stiffn
     omega : float or array_like, shape (Nw,)
         Wave frequencies [rad/s].
     points : array_like, shape (3,) or (Np, 3)
-        Hinge (fender contact) points, body frame [m].
+        Contact points, body frame [m].
     beta_deg : float or array_like, optional
         Wave directions relative to the vessel [deg]; default the database's.
     normal : array_like, shape (3,) or (Np, 3), optional
-        Contact-plane normals, from the landing towards the vessel (normalised here; must not be
-        vertical). Needed for a spring–damper normal and for :meth:`HingedResponse.contact_components`.
+        Contact normals, from the landing towards the vessel (normalised here; horizontal). Needed for
+        springs and for :meth:`HingedResponse.contact_components`.
     stiffness, damping : float or array_like, shape (Np,), optional
-        Normal spring k_n [N/m] and damper d_n [N s/m] per point (one value for all). When either is
-        given (the other defaults to 0) the points are pinned only tangentially; when both are None
-        the points are pinned in all three directions (rigid hinge).
+        Normal spring k_n [N/m] and damper d_n [N s/m] per point (one value for all).
+    shear_stiffness, shear_damping : float or array_like, shape (Np,), optional
+        The rubber's shear spring k_t [N/m] (``inf`` or None: pinned) and damper c_t [N s/m].
+    sideways : bool
+        The horizontal tangent is restrained too (friction along the tube).
     thrust : float
-        Bollard push T [N] along the vessel's x axis (0: no preload, the linear system of seed 002 §3.2.1).
+        Bollard push T [N] along the vessel's x axis (0: no preload).
     thrust_position : array_like, shape (3,)
         Body point of the thrust [m].
     additional_damping : array_like, shape (6, 6) or (6,), optional
@@ -439,8 +333,8 @@ def hinged_rao(db: HydroDB, omega, points, *, beta_deg=None, normal=None, stiffn
     Raises
     ------
     ValueError
-        Bad arguments, or a thrust the hinge cannot hold statically (e.g. a yaw moment about a single
-        fender point, or a normal with no spring).
+        Bad arguments, or a thrust the landing cannot hold statically (e.g. a yaw moment about a
+        single fender point, or a normal with no spring).
     """
     P = np.atleast_2d(np.asarray(points, dtype=float))
     if P.ndim != 2 or P.shape[1] != 3 or not np.all(np.isfinite(P)):
@@ -457,34 +351,34 @@ def hinged_rao(db: HydroDB, omega, points, *, beta_deg=None, normal=None, stiffn
             raise ValueError("normals must be finite non-zero vectors")
         N = N / lens[:, None]
     spring = stiffness is not None or damping is not None
-    if spring and N is None:
-        raise ValueError("a spring–damper normal (stiffness, damping) needs the contact normal(s): give normal=")
-    k = _per_point(0.0 if stiffness is None else stiffness, n_p, "stiffness")
-    d = _per_point(0.0 if damping is None else damping, n_p, "damping")
+    if (spring or shear_stiffness is not None) and N is None:
+        raise ValueError("springs (stiffness, damping, shear_stiffness) need the contact normal(s): give normal=")
+    inf = np.inf
+    if spring:
+        law = ContactLaw(P, N, _per_point(0.0 if stiffness is None else stiffness, n_p, "stiffness"),
+                         _per_point(0.0 if damping is None else damping, n_p, "damping"),
+                         _per_point(inf if shear_stiffness is None else shear_stiffness, n_p, "shear_stiffness"),
+                         _per_point(0.0 if shear_damping is None else shear_damping, n_p, "shear_damping"),
+                         sideways=sideways)
+    elif shear_stiffness is not None:
+        raise ValueError("a shear spring needs the normal's spring too (stiffness=)")
+    else:  # Wu's rigid hinge: every direction pinned
+        law = ContactLaw(P, np.array([1.0, 0.0, 0.0]) if N is None else N, inf, 0.0, inf, 0.0, sideways=True)
 
     w = _omega(db, omega)
     Z = impedance(db, w, additional_damping)        # (Nw, 6, 6)
     X = excitation_force(db, w, beta_deg)           # (Nw, Nβ, 6)
-    G = np.stack([point_map(p) for p in P])         # (Np, 3, 6)
-    # pinned directions of each point: the rows of T_c^T (3 for a rigid hinge, the 2 tangents with a spring normal)
-    Tt = [np.stack(_tangents(N[c])) if spring else np.eye(3) for c in range(n_p)]
-    Cmat = np.concatenate([Tt[c] @ G[c] for c in range(n_p)])  # (m, 6)
-    gn = [N[c] @ G[c] if spring else np.zeros(6) for c in range(n_p)]  # n_c^T G_c: normal displacement
-
+    K, D, pins, _ = law.assemble()
     x0, J0, Kg = np.zeros(6), np.zeros((n_p, 3)), np.zeros((6, 6))
     if thrust != 0.0:
-        x0, J0, Kg = _static_preload(db.C, Cmat, Tt, gn, N, k if spring else None, P, float(thrust),
-                                     np.asarray(thrust_position, dtype=float).reshape(3))
-    Zs = Z - Kg
-    if spring:
-        for c in range(n_p):
-            Zs = Zs + (k[c] + 1j * w * d[c])[:, None, None] * np.outer(gn[c], gn[c])[None]
+        x0, J0, Kg = static_preload(db.C, law, float(thrust), thrust_position)
+    Zs = Z - Kg + K[None] + 1j * w[:, None, None] * D[None]
     nb = X.shape[1]
     x = np.empty((w.size, nb, 6), dtype=complex)
-    lam = np.empty((w.size, nb, Cmat.shape[0]), dtype=complex)
+    lam = np.empty((w.size, nb, pins.shape[0]), dtype=complex)
     for iw in range(w.size):
-        xi, li, _ = _solve_saddle(Zs[iw], Cmat, X[iw].T)
+        xi, li, _ = solve_saddle(Zs[iw], pins, X[iw].T)
         x[iw], lam[iw] = xi.T, li.T
-    J = _reactions(lam, x, Tt, gn, N, [(k[c] + 1j * w * d[c])[:, None] for c in range(n_p)] if spring else None)
-    return HingedResponse(omega=w, beta_deg=_beta(db, beta_deg), points=P, normals=N, x=x, J=J,
+    J = law.reactions(x, lam, w[:, None])
+    return HingedResponse(omega=w, beta_deg=_beta(db, beta_deg), points=P, normals=N, law=law, x=x, J=J,
                           x_static=x0, J_static=J0)

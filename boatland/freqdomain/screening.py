@@ -1,40 +1,41 @@
-r"""Wu (2014) slip screening in the frequency domain (seed 002 §3.2.1, §3.4): slip margins, their
+r"""Wu (2014) slip screening in the frequency domain (Grøtting 2015 §3.2.1, §3.4): slip margins, their
 statistics in a wave spectrum, the incident probability, limiting Hs per (Tp, direction).
 
-The vessel is hinged at its fender point(s) (:func:`boatland.freqdomain.rao.hinged_rao`). With the
-contact forces on the vessel summed over the contacts, :math:`J = J^0 + \mathrm{Re}\{\hat J e^{i\omega t}\}`
-(static preload plus waves), the mean contact normal :math:`\bar n` (landing → vessel) and, for each
-slip mode m, the direction :math:`d_m` of the force the landing must supply,
+The vessel is held on its landing (:func:`boatland.freqdomain.rao.hinged_rao`). **Each contact c is
+checked on its own**: with its force on the vessel :math:`J_c = J^0_c + \mathrm{Re}\{\hat J_c e^{i\omega t}\}`
+(static preload plus waves), its normal :math:`n_c` (landing → vessel) and, for each slip mode m, the
+direction :math:`d_{m,c}` of the force the landing must supply,
 
-=========  ===================  ======================================================
-mode       :math:`d_m`          the fender slips ... when the needed force along d_m
-=========  ===================  ======================================================
-down       :math:`+e_z`         ... upwards exceeds friction (waves push the bow down)
-up         :math:`-e_z`         ... downwards exceeds friction
-left       :math:`-s`           ... to starboard exceeds friction (slip to port)
-right      :math:`+s`           ... to port exceeds friction (slip to starboard)
-=========  ===================  ======================================================
+=========  ======================  =====================================================
+mode       :math:`d_{m,c}`          the fender slips ... when the needed force along d
+=========  ======================  =====================================================
+down       :math:`+e_z`             ... upwards exceeds friction (waves push the bow down)
+up         :math:`-e_z`             ... downwards exceeds friction
+left       :math:`-s_c`             ... to starboard exceeds friction (slip to port)
+right      :math:`+s_c`             ... to port exceeds friction (slip to starboard)
+=========  ======================  =====================================================
 
-with :math:`s = \bar n \times e_z` (port for a bow-on landing), the fender holds while
+with :math:`s_c = n_c \times e_z` (port for a bow-on landing), the contact holds while
 
-.. math:: d_m^\top J(t) < \mu\,\bar n^\top J(t)
+.. math:: d_{m,c}^\top J_c(t) < \mu\,n_c^\top J_c(t)
    \quad\Longleftrightarrow\quad
-   \zeta_m(t) = (d_m - \mu\bar n)^\top \tilde J(t) < a_m = \mu N^0 - d_m^\top J^0 ,
+   \zeta_{m,c}(t) = (d_{m,c} - \mu n_c)^\top \tilde J_c(t) < a_{m,c} = \mu\, n_c^\top J^0_c - d_{m,c}^\top J^0_c ,
 
-seed 002 eq. 3.13–3.24 (:math:`\eta, \alpha, \chi, \psi`, with :math:`N^0 = F_b`, :math:`J^0 = -F_b e_x`)
-and eq. 3.64–3.75 of the improved variant (static vertical force :math:`F_{zc}` in :math:`J^0`). The
-margins :math:`\zeta_m` are zero-mean Gaussian with transfer functions
-:math:`H_m = (d_m - \mu\bar n)^\top \hat J` (eq. 3.25–3.28, 3.76–3.79).
+Grøtting 2015 eq. 3.13–3.24 and eq. 3.64–3.75 of the improved variant — there for the summed force of
+a single hinge; summed over two contacts the opposite vertical forces of a roll or yaw couple would
+cancel, so here every contact has its own four margins. The margins are zero-mean Gaussian with
+transfer functions :math:`H_{m,c} = (d_{m,c} - \mu n_c)^\top \hat J_c` (eq. 3.25–3.28, 3.76–3.79).
 
 Two hinge models (``method``):
 
-``"wu"`` — seed 002 §3.2.1: rigid hinge at the points, the thrust along the *global* x axis, so it
-  only sets the static normal :math:`N^0 = F_b` (no dynamics of its own).
+``"wu"`` — Grøtting 2015 §3.2.1: rigid hinge at the points, the thrust along the *global* x axis, so
+  it only sets the static normal :math:`N^0_c = F_b / N_p` (no dynamics of its own).
 ``"improved"`` (default) — §3.4: the thrust follows the vessel's x axis; :func:`hinged_rao` solves the
-  static preload (the :math:`F_{zc}` of eq. 3.56–3.61 for any hinge) and linearises about it, which
-  contains the follower forces :math:`F_b\theta_5, F_b\theta_6` of eq. 3.62–3.63; the normal carries
-  the fender's spring–damper. This is the hinge whose reaction equals the time-domain stuck fender
-  force within 0.25 % (tests/validation/test_hinge_reaction.py).
+  static preload (the :math:`F_{zc}` of eq. 3.56–3.61 for any landing) and linearises about it, which
+  contains the follower forces :math:`F_b\theta_5, F_b\theta_6` of eq. 3.62–3.63; each contact is the
+  time domain's: the normal spring–damper and the rubber's shear spring–damper (or the rigid stick),
+  and the pile's scattered wave when the time domain applies it. The stuck contact forces of the time
+  domain equal these (tests/validation/test_hinge_reaction.py).
 
 In a spectrum :math:`S(\omega)` (long-crested, direction β) the spectral moments of a response with
 transfer function H are :math:`m_k = \int_0^\infty \omega^k |H(\omega,\beta)|^2 S(\omega)\,d\omega`
@@ -64,6 +65,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import weakref
 from dataclasses import dataclass
 
 import numpy as np
@@ -71,6 +73,7 @@ import numpy as np
 from boatland.errors import BoatlandInputError
 from boatland.freqdomain.rao import hinged_rao
 from boatland.model.hydrodb import HydroDB
+from boatland.model.pile_diffraction import pile_scattered_excitation
 from boatland.model.seastate import SpectrumPart
 from boatland.waves.spectra import spreading_cos2s
 
@@ -87,6 +90,9 @@ MODES = ("down", "up", "left", "right")
 STATISTICS = ("rayleigh", "rice", "vanmarcke")
 METHODS = ("improved", "wu")
 HS_MAX = 30.0  # [m] limiting Hs reported as inf above this
+#: The databases with the pile's scattered wave added, per database and layout (computing X_s over a
+#: database's whole (ω, β) grid takes about a second; the screening of one landing asks for it often).
+_NEAR_PILE: "weakref.WeakKeyDictionary[HydroDB, dict]" = weakref.WeakKeyDictionary()
 
 
 def accept_probability(accept) -> float:
@@ -123,7 +129,7 @@ class LandingSetup:
     points : ndarray, shape (Np, 3)
         Fender contact points [m].
     normals : ndarray, shape (Np, 3)
-        Unit contact-plane normals, landing → vessel (horizontal).
+        Unit contact normals, landing → vessel (horizontal).
     mu : float
         Static friction coefficient μ (μ_s; stuck fender).
     thrust : float
@@ -132,12 +138,22 @@ class LandingSetup:
         Body point of the thrust [m].
     stiffness, damping : float
         Fender normal spring c_f [N/m] and damper d_f [N s/m] per contact (``"improved"`` hinge).
+    shear_stiffness : float
+        The rubber's shear stiffness k_t per contact [N/m]; ``inf``: the rigid stick.
+    shear_damping : ndarray, shape (Np,)
+        Its damping c_t per contact [N s/m].
+    sideways : bool
+        Friction (and shear) also along the tube, not only vertically.
     additional_damping : ndarray, shape (6, 6)
         Extra linear damping of the vessel (viscous roll …).
     heading_deg : float
         Vessel heading [deg] (global): relative direction = wave direction − heading.
     roll_limit_deg : float
-        Maximum acceptable roll angle θ_max [deg] (seed 002 Table 4.1: 10°).
+        Maximum acceptable roll angle θ_max [deg] (Grøtting 2015 Table 4.1: 10°).
+    pile : tuple or None
+        ``(radius, (x, y), water_depth)``: the monopile whose scattered wave the vessel feels — its radius
+        [m], the vessel's mean reference-point position relative to the pile axis (global) [m] and the
+        depth [m] — as the time domain applies it (``landing.diffraction``); None: the open sea.
     """
 
     points: np.ndarray
@@ -147,9 +163,13 @@ class LandingSetup:
     thrust_position: np.ndarray = dataclasses.field(default_factory=lambda: np.zeros(3))
     stiffness: float = 1.0e6
     damping: float = 4.0e4
+    shear_stiffness: float = math.inf
+    shear_damping: np.ndarray | float = 0.0
+    sideways: bool = True
     additional_damping: np.ndarray = dataclasses.field(default_factory=lambda: np.zeros((6, 6)))
     heading_deg: float = 0.0
     roll_limit_deg: float = 10.0
+    pile: tuple | None = None
 
     def __post_init__(self):
         P = np.atleast_2d(np.asarray(self.points, dtype=float))
@@ -162,10 +182,18 @@ class LandingSetup:
                             self.roll_limit_deg, 0.0)):
             if not (math.isfinite(v) and v > lo):
                 raise BoatlandInputError(f"landing: {name} = {v!r} must be a finite number > {lo:g}")
+        if not self.shear_stiffness > 0:
+            raise BoatlandInputError(f"landing: shear_stiffness = {self.shear_stiffness!r} must be > 0 (inf: rigid)")
         object.__setattr__(self, "points", P)
         object.__setattr__(self, "normals", N)
+        object.__setattr__(self, "shear_damping",
+                           np.array(np.broadcast_to(np.asarray(self.shear_damping, dtype=float), (P.shape[0],))))
         object.__setattr__(self, "thrust_position", np.asarray(self.thrust_position, dtype=float).reshape(3))
         object.__setattr__(self, "additional_damping", np.asarray(self.additional_damping, dtype=float))
+
+    @property
+    def n_points(self) -> int:
+        return self.points.shape[0]
 
     @property
     def mean_normal(self) -> np.ndarray:
@@ -176,6 +204,20 @@ class LandingSetup:
     def replace(self, **changes) -> "LandingSetup":
         """A copy with some attributes changed (e.g. ``mu=0.8, thrust=120e3``)."""
         return dataclasses.replace(self, **changes)
+
+    def near_pile(self, db: HydroDB) -> HydroDB:
+        """``db`` with the pile's scattered wave added to its excitation (:func:`pile_scattered_excitation`),
+        as the time domain has it; ``db`` itself without a pile."""
+        if self.pile is None:
+            return db
+        radius, position, depth = self.pile
+        key = (float(radius), float(position[0]), float(position[1]), float(depth), float(self.heading_deg))
+        per_db = _NEAR_PILE.setdefault(db, {})
+        if key not in per_db:
+            Xs = pile_scattered_excitation(db, position, self.heading_deg, radius, depth)
+            per_db.clear()                      # one layout per database at a time: bounded memory
+            per_db[key] = db.replace(X=db.X + Xs)
+        return per_db[key]
 
     def check_on_hull(self, db: HydroDB, source: str = "landing") -> None:
         """Refuse fender points that are not at the bow of ``db``'s hull (front 20 % of its length, at most
@@ -200,33 +242,45 @@ class LandingSetup:
 
     @classmethod
     def from_scenario(cls, scenario, db: HydroDB, *, roll_limit_deg: float | None = None) -> "LandingSetup":
-        """The landing of a validated scenario: its fender points, the struts' normals turned into the
-        vessel's axes, μ_s, thrust, fender spring–damper, additional linear damping, heading. Roll limit:
-        ``roll_limit_deg``, else the largest of ``incidents.roll_limit_deg``, else 10°.
+        """The landing of a validated scenario, as its time domain runs it: its fender points, the tubes'
+        normals turned into the vessel's axes, μ_s, thrust, the fender's normal and shear laws (the
+        shear damping from its ratio of critical for this vessel), additional linear damping, heading,
+        and the monopile's scattered wave when the trial applies it. Roll limit: ``roll_limit_deg``,
+        else the largest of ``incidents.roll_limit_deg``, else 10°.
 
         Raises
         ------
         BoatlandInputError
             The scenario has no landing, fender or thrust (keys named).
         """
+        from boatland.model.scenario_checks import contact_period
+
         src = scenario.source
         for key in ("landing", "fender", "thrust"):
             if getattr(scenario, key) is None:
                 raise BoatlandInputError(f"{src}: [{key}] is missing: screening needs a landing, a fender and a thrust")
-        _, _, psi = scenario.start_pose()
+        x0, y0, psi = scenario.start_pose()
         c, s = math.cos(psi), math.sin(psi)
         n_loc = scenario.landing.normals @ np.array([[c, s], [-s, c]]).T
-        P = np.asarray(scenario.fender.points, dtype=float)
+        f = scenario.fender
+        P = np.asarray(f.points, dtype=float)
         if n_loc.shape[0] != P.shape[0]:
             raise BoatlandInputError(f"{src}: fender.points: {P.shape[0]} points for {n_loc.shape[0]} struts")
         lim = roll_limit_deg
         if lim is None:
             lim = max(scenario.incidents.roll_limit_deg) if scenario.incidents.roll_limit_deg else 10.0
-        setup = cls(points=P, normals=np.column_stack([n_loc, np.zeros(len(P))]), mu=scenario.fender.mu_s,
+        pile = scenario.pile(db)
+        if pile is not None:
+            model = scenario.wave_model(db)
+            depth = getattr(model, "water_depth", db.water_depth)
+            pile = (pile[0], (x0 - pile[1][0], y0 - pile[1][1]), depth)
+        c_t = 0.0 if f.rigid else np.asarray(contact_period(scenario, db).shear_damping)
+        setup = cls(points=P, normals=np.column_stack([n_loc, np.zeros(len(P))]), mu=f.mu_s,
                     thrust=scenario.thrust.force, thrust_position=scenario.thrust.position,
-                    stiffness=scenario.fender.stiffness, damping=scenario.fender.damping,
+                    stiffness=f.stiffness, damping=f.damping, shear_stiffness=f.shear_stiffness,
+                    shear_damping=c_t, sideways=f.sideways,
                     additional_damping=scenario.additional_damping(db)[0], heading_deg=scenario.vessel.heading_deg,
-                    roll_limit_deg=lim)
+                    roll_limit_deg=lim, pile=pile)
         setup.check_on_hull(db, src)
         return setup
 
@@ -234,19 +288,22 @@ class LandingSetup:
 # --------------------------------------------------------------------------------------- transfer functions
 @dataclass(frozen=True, eq=False)
 class SlipTransfer:
-    r"""Slip-margin and roll transfer functions of the hinged vessel, per unit wave amplitude.
+    r"""Slip-margin and roll transfer functions of the landed vessel, per unit wave amplitude.
 
     Attributes
     ----------
     omega : ndarray, shape (Nw,)
     beta_deg : ndarray, shape (Nβ,)
         Relative wave directions [deg].
-    H : ndarray of complex, shape (Nw, Nβ, 5)
-        Margins ζ_m of :data:`MODES` [N/m], then roll [rad/m].
-    capacity : ndarray, shape (5,)
-        Levels a_m = μN⁰ − d_mᵀJ⁰ [N] of the margins, then θ_max [rad].
-    J_static : ndarray, shape (3,)
-        Static contact force on the vessel, summed [N]; ``N_static`` its normal part n̄ᵀJ⁰.
+    H : ndarray of complex, shape (Nw, Nβ, 4 Np + 1)
+        Margins ζ_{m,c} of :data:`MODES` for each contact (contact-major: contact 0's four, then
+        contact 1's, …) [N/m], then roll [rad/m].
+    capacity : ndarray, shape (4 Np + 1,)
+        Levels a_{m,c} = μ n_cᵀJ⁰_c − d_{m,c}ᵀJ⁰_c of the margins [N], then θ_max [rad].
+    names : tuple of str
+        What each response is: ``"down 0"`` … ``"right 1"``, ``"roll"``.
+    J_static : ndarray, shape (Np, 3)
+        Static contact force on the vessel at each contact [N]; ``N_static`` (Np,) its normal part.
     method : str
     setup : LandingSetup
     """
@@ -255,10 +312,16 @@ class SlipTransfer:
     beta_deg: np.ndarray
     H: np.ndarray
     capacity: np.ndarray
+    names: tuple[str, ...]
     J_static: np.ndarray
-    N_static: float
+    N_static: np.ndarray
     method: str
     setup: LandingSetup
+
+
+def response_names(n_responses: int) -> tuple[str, ...]:
+    """Names of the screening's responses: each contact's four slip modes (``"down 0"`` …), then roll."""
+    return tuple(f"{m} {c}" for c in range((n_responses - 1) // 4) for m in MODES) + ("roll",)
 
 
 def _directions(n: np.ndarray) -> np.ndarray:
@@ -273,12 +336,28 @@ def default_omega(db: HydroDB, n: int = 600) -> np.ndarray:
     return np.linspace(max(0.05, float(db.omega[0])), float(db.omega[-1]), n)
 
 
+def landed_response(db: HydroDB, setup: LandingSetup, omega, beta_deg, method: str = "improved"):
+    """The landed vessel's response (:func:`hinged_rao`) as the screening takes it: ``"improved"`` —
+    the time domain's contacts (normal and shear laws, the rigid stick when k_t = ∞), follower thrust,
+    the pile's scattered wave when the setup has one; ``"wu"`` — a rigid hinge in the open sea."""
+    if method == "wu":
+        return hinged_rao(db, omega, setup.points, beta_deg=beta_deg, normal=setup.normals,
+                          additional_damping=setup.additional_damping)
+    shear = None if not math.isfinite(setup.shear_stiffness) else setup.shear_stiffness
+    return hinged_rao(setup.near_pile(db), omega, setup.points, beta_deg=beta_deg, normal=setup.normals,
+                      stiffness=setup.stiffness, damping=setup.damping, shear_stiffness=shear,
+                      shear_damping=setup.shear_damping if shear is not None else None, sideways=setup.sideways,
+                      thrust=setup.thrust, thrust_position=setup.thrust_position,
+                      additional_damping=setup.additional_damping)
+
+
 def slip_transfer(db: HydroDB, setup: LandingSetup, *, omega=None, beta_deg=None, method: str = "improved",
                   mu: float | None = None, thrust: float | None = None) -> SlipTransfer:
-    r"""Transfer functions of the four slip margins and of roll (seed 002 eq. 3.25–3.28, 3.34, 3.76–3.79).
+    r"""Transfer functions of every contact's four slip margins and of roll (Grøtting 2015 eq. 3.25–3.28,
+    3.34, 3.76–3.79, per contact).
 
-    .. math:: H_m(\omega,\beta) = (d_m - \mu\bar n)^\top \sum_c \hat J_c(\omega,\beta), \qquad
-              a_m = \mu\,\bar n^\top J^0 - d_m^\top J^0
+    .. math:: H_{m,c}(\omega,\beta) = (d_{m,c} - \mu n_c)^\top \hat J_c(\omega,\beta), \qquad
+              a_{m,c} = \mu\,n_c^\top J^0_c - d_{m,c}^\top J^0_c
 
     Parameters
     ----------
@@ -304,23 +383,20 @@ def slip_transfer(db: HydroDB, setup: LandingSetup, *, omega=None, beta_deg=None
         setup = setup.replace(mu=setup.mu if mu is None else mu, thrust=setup.thrust if thrust is None else thrust)
     w = default_omega(db) if omega is None else np.asarray(omega, dtype=float)
     b = np.arange(0.0, 360.0, 45.0) if beta_deg is None else np.atleast_1d(np.asarray(beta_deg, dtype=float))
-    nbar = setup.mean_normal
-    if method == "wu":
-        r = hinged_rao(db, w, setup.points, beta_deg=b, normal=setup.normals,
-                       additional_damping=setup.additional_damping)
-        J0 = -setup.thrust * np.array([1.0, 0.0, 0.0])
-    else:
-        r = hinged_rao(db, w, setup.points, beta_deg=b, normal=setup.normals, stiffness=setup.stiffness,
-                       damping=setup.damping, thrust=setup.thrust, thrust_position=setup.thrust_position,
-                       additional_damping=setup.additional_damping)
-        J0 = r.J_static.sum(axis=0)
-    J = r.J.sum(axis=2)                                    # (Nw, Nβ, 3)
-    D = _directions(nbar) - setup.mu * nbar                # (4, 3)
-    H = np.concatenate([J @ D.T, r.x[..., 3:4]], axis=-1)  # margins, roll
-    N0 = float(nbar @ J0)
-    cap = np.concatenate([setup.mu * N0 - _directions(nbar) @ J0, [math.radians(setup.roll_limit_deg)]])
-    return SlipTransfer(omega=w, beta_deg=b, H=H, capacity=cap, J_static=J0, N_static=N0, method=method,
-                        setup=setup)
+    r = landed_response(db, setup, w, b, method)
+    n_p = setup.n_points
+    J0 = (-setup.thrust / n_p * np.tile([1.0, 0.0, 0.0], (n_p, 1))) if method == "wu" else r.J_static
+    H, cap, names = [], [], []
+    for c in range(n_p):
+        n = setup.normals[c]
+        Dc = _directions(n)
+        H.append(r.J[:, :, c] @ (Dc - setup.mu * n).T)                    # (Nw, Nβ, 4)
+        cap.append(setup.mu * float(n @ J0[c]) - Dc @ J0[c])
+        names += [f"{m} {c}" for m in MODES]
+    H = np.concatenate(H + [r.x[..., 3:4]], axis=-1)
+    cap = np.concatenate(cap + [[math.radians(setup.roll_limit_deg)]])
+    return SlipTransfer(omega=w, beta_deg=b, H=H, capacity=cap, names=tuple(names + ["roll"]), J_static=J0,
+                        N_static=np.einsum("pk,pk->p", setup.normals, J0), method=method, setup=setup)
 
 
 # --------------------------------------------------------------------------------------- statistics
@@ -345,7 +421,7 @@ def spectral_moments(transfer: SlipTransfer, Tp, *, sea: SpectrumPart | None = N
 
     Returns
     -------
-    m : ndarray, shape (NT, Nβ, 5, 3)
+    m : ndarray, shape (NT, Nβ, R, 3)
         m₀, m₁, m₂ of the 4 margins [N²·s⁻ᵏ] and roll [rad²·s⁻ᵏ] per m² of Hs².
     captured : ndarray, shape (NT,)
         Share of the wave variance m₀ inside the frequency grid (the rest is left out).
@@ -360,7 +436,7 @@ def spectral_moments(transfer: SlipTransfer, Tp, *, sea: SpectrumPart | None = N
     dw = np.diff(w)
     wt[:-1] += dw / 2
     wt[1:] += dw / 2
-    H2 = np.abs(transfer.H) ** 2                            # (Nw, Nβ, 5)
+    H2 = np.abs(transfer.H) ** 2                            # (Nw, Nβ, R)
     powers = w[:, None] ** np.arange(3)[None, :]            # (Nw, 3)
     m = np.einsum("tw,w,wbr,wk->tbrk", S, wt, H2, powers, optimize=True)
     captured = (S @ wt) / (1.0 / 16.0)
@@ -425,9 +501,9 @@ def incident_probability(Hs, m: np.ndarray, capacity: np.ndarray, Tp, *, statist
     ----------
     Hs : array_like
         Significant wave heights [m], broadcast against ``m[..., 0, 0]`` (shape (NT, Nβ)).
-    m : ndarray, shape (NT, Nβ, 5, 3)
+    m : ndarray, shape (NT, Nβ, R, 3)
         Spectral moments for Hs = 1 m (:func:`spectral_moments`).
-    capacity : ndarray, shape (5,)
+    capacity : ndarray, shape (R,)
         Levels a_i (:attr:`SlipTransfer.capacity`).
     Tp : array_like, shape (NT,)
     statistics : {"rayleigh", "rice", "vanmarcke"}
@@ -438,7 +514,7 @@ def incident_probability(Hs, m: np.ndarray, capacity: np.ndarray, Tp, *, statist
     -------
     p_cycle, p_access : ndarray, shape (NT, Nβ)
         Incident probability per cycle and per access.
-    per_mode : ndarray, shape (NT, Nβ, 5)
+    per_mode : ndarray, shape (NT, Nβ, R)
         Per-cycle exceedance probability (Rayleigh) or first-passage rate [1/s] (Rice, Vanmarcke) of each
         response of :data:`MODES` and roll.
     """
@@ -455,10 +531,12 @@ def incident_probability(Hs, m: np.ndarray, capacity: np.ndarray, Tp, *, statist
         return p_cycle, p_access, p
     m1, m2 = m[..., 1] * Hs ** 2, m[..., 2] * Hs ** 2
     if statistics == "rice":
-        nu = rice_rate(capacity, m0, m2) * np.array([1.0, 1.0, 1.0, 1.0, 2.0])  # roll: both signs
+        sides = np.ones(capacity.shape[-1])
+        sides[-1] = 2.0                                                   # roll (last): both signs
+        nu = rice_rate(capacity, m0, m2) * sides
     else:
-        nu = np.concatenate([vanmarcke_rate(capacity[:4], m0[..., :4], m1[..., :4], m2[..., :4]),
-                             vanmarcke_rate(capacity[4:], m0[..., 4:], m1[..., 4:], m2[..., 4:], two_sided=True)],
+        nu = np.concatenate([vanmarcke_rate(capacity[:-1], m0[..., :-1], m1[..., :-1], m2[..., :-1]),
+                             vanmarcke_rate(capacity[-1:], m0[..., -1:], m1[..., -1:], m2[..., -1:], two_sided=True)],
                             axis=-1)
     total = nu.sum(axis=-1)
     return -np.expm1(-total * T), -np.expm1(-total * access_duration), nu
@@ -475,7 +553,8 @@ class LimitTable:
     Hs : ndarray, shape (NT, Nβ)
         Limiting significant wave height [m] (inf above :data:`HS_MAX`, 0 if the fender slips statically).
     governing : ndarray of str, shape (NT, Nβ)
-        The response that dominates at the limit (one of :data:`MODES` or "roll").
+        The response that dominates at the limit (a slip mode of :data:`MODES` and its contact, e.g.
+        ``"down 1"``, or ``"roll"``).
     accept : float
     statistics, method : str
     captured : ndarray, shape (NT,)
@@ -503,7 +582,7 @@ class LimitTable:
 
 def limiting_hs(m: np.ndarray, capacity: np.ndarray, Tp, beta_deg, *, accept=ACCEPT_PRESETS["best"],
                 statistics: str = "rayleigh", access_duration: float = ACCESS_DURATION, method: str = "improved",
-                captured=None) -> LimitTable:
+                captured=None, names=None) -> LimitTable:
     r"""Limiting Hs per (Tp, β): the largest Hs whose incident probability is accepted.
 
     ``"rayleigh"``: :math:`P_{inc}(H_s) \le P_{facc}\,T_p/t_{acc}` (seed 002 eq. 3.38–3.40, 3.80);
@@ -513,9 +592,9 @@ def limiting_hs(m: np.ndarray, capacity: np.ndarray, Tp, beta_deg, *, accept=ACC
 
     Parameters
     ----------
-    m : ndarray, shape (NT, Nβ, 5, 3)
+    m : ndarray, shape (NT, Nβ, R, 3)
         Spectral moments for Hs = 1 m.
-    capacity : ndarray, shape (5,)
+    capacity : ndarray, shape (R,)
     Tp, beta_deg : array_like
     accept : float or str
         Accepted probability of an incident per access, in (0, 1), or a preset name.
@@ -547,7 +626,7 @@ def limiting_hs(m: np.ndarray, capacity: np.ndarray, Tp, beta_deg, *, accept=ACC
     Hs = np.where(never, np.inf, np.where(always, 0.0, np.exp(lo)))
     _, _, per = incident_probability(np.where(np.isfinite(Hs) & (Hs > 0), Hs, 1.0), m, capacity, T,
                                      statistics=statistics, access_duration=access_duration)
-    names = np.array(MODES + ("roll",))
+    names = np.array(response_names(capacity.shape[-1]) if names is None else names)
     governing = names[np.argmax(per, axis=-1)]
     cap = np.ones(T.size) if captured is None else np.asarray(captured)
     return LimitTable(Tp=T, beta_deg=np.asarray(beta_deg, dtype=float), Hs=Hs, governing=governing,
@@ -596,7 +675,7 @@ def screening_grid(db: HydroDB, setup: LandingSetup, Tp, beta_deg=None, *, accep
     h = db.water_depth if water_depth is None else water_depth
     m, captured = spectral_moments(tr, Tp, sea=sea, water_depth=h, g=db.g)
     return limiting_hs(m, tr.capacity, Tp, tr.beta_deg, accept=accept, statistics=statistics,
-                       access_duration=access_duration, method=method, captured=captured)
+                       access_duration=access_duration, method=method, captured=captured, names=tr.names)
 
 
 # --------------------------------------------------------------------------------------- one given sea
@@ -606,11 +685,13 @@ class SeaResponse:
 
     Attributes
     ----------
-    sigma : ndarray, shape (5,)
-        Standard deviations of the margins of :data:`MODES` [N] and of roll [rad].
-    m : ndarray, shape (5, 3)
+    sigma : ndarray, shape (R,)
+        Standard deviations of every contact's margins of :data:`MODES` [N] and of roll [rad].
+    m : ndarray, shape (R, 3)
         Spectral moments m₀, m₁, m₂.
-    capacity : ndarray, shape (5,)
+    capacity : ndarray, shape (R,)
+    names : tuple of str
+        The responses (:attr:`SlipTransfer.names`).
     p_cycle, p_access : float
         Incident probability per cycle (of ``cycle_period``) and per access.
     cycle_period : float
@@ -621,6 +702,7 @@ class SeaResponse:
     sigma: np.ndarray
     m: np.ndarray
     capacity: np.ndarray
+    names: tuple
     p_cycle: float
     p_access: float
     cycle_period: float
@@ -683,5 +765,5 @@ def sea_response(db: HydroDB, setup: LandingSetup, parts, *, water_depth: float 
     Tc = parts[int(np.argmax([p.Hs for p in parts]))].Tp
     pc, pa, _ = incident_probability(1.0, m[None, None], tr.capacity, [Tc], statistics=statistics,
                                      access_duration=access_duration)
-    return SeaResponse(sigma=np.sqrt(m[:, 0]), m=m, capacity=tr.capacity, p_cycle=float(pc[0, 0]),
+    return SeaResponse(sigma=np.sqrt(m[:, 0]), m=m, capacity=tr.capacity, names=tr.names, p_cycle=float(pc[0, 0]),
                        p_access=float(pa[0, 0]), cycle_period=float(Tc), statistics=statistics, method=method)

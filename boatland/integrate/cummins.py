@@ -38,20 +38,24 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from boatland.contact.fender import (STICK, contact_forces, contact_states, contact_workspace, decide_modes,
-                                     tangential_position)
+from boatland.contact.fender import (OFF, RK4_WEIGHTS, _workspace, accumulate_sliding, contact_forces,
+                                     contact_state_arrays, contact_states, decide_modes)
 from boatland.rigid import add_point_force, rotation_matrix
 
-__all__ = ["run_cummins", "STATUS_OK", "STATUS_NAN", "STATUS_RUNAWAY", "STATUS_MESSAGES"]
+__all__ = ["run_cummins", "STATUS_OK", "STATUS_NAN", "STATUS_RUNAWAY", "STATUS_SLID_OFF", "STATUS_MESSAGES"]
 
 STATUS_OK = 0
 STATUS_NAN = 1
 STATUS_RUNAWAY = 2
+STATUS_SLID_OFF = 3
 STATUS_MESSAGES = {
     STATUS_OK: "completed",
     STATUS_NAN: "the state became NaN or infinite",
     STATUS_RUNAWAY: "runaway motion (a displacement or rotation beyond the limit)",
+    STATUS_SLID_OFF: "the fender slid off the landing",
 }
+#: Statuses that end a trial with an outcome rather than a failure of the integration.
+OUTCOME_STATUSES = (STATUS_OK, STATUS_SLID_OFF)
 
 
 #: RK4 stages: time of each stage in half steps into the step (c = 0, ½, ½, 1 → 0, 1, 1, 2; also the row
@@ -198,30 +202,29 @@ def _stage(n, st, x, v, z, v_n, R, dt, H, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p,
     ``kv`` (4, 6) and the state-space derivative into row ``st`` of ``kz`` (4, ns), contacts included.
 
     ``v_n`` is the velocity at the step start, ``R`` the body rotation at the stage state (thrust
-    direction, contact points). The first stage decides the stick–slip modes of the step at the step
-    start (:func:`boatland.contact.fender.decide_modes`) and reuses its last solve when final.
-    ``scratch`` = (acc, F) (6,) each, ``records`` = (f_t, f_n, needed, available) per contact.
+    direction, contact points), ``ct`` the contacts (:class:`boatland.contact.fender.Contacts`) and
+    ``cs`` their state. The first stage closes the previous step of every contact and decides the
+    stick–slip modes of this one at the step start (:func:`boatland.contact.fender.decide_modes`),
+    reusing its last solve when final. ``scratch`` = (acc, F) (6,) each, ``records`` = (f_t, f_n,
+    needed, available) per contact.
     """
     c2 = _C2[st]
     t_idx = 2 * n + c2
-    P, S, N, TH, CF, DF, MU, sideways = ct
-    mode, fdir, anchor, anchored = cs
     kin, solve, F_try = ws
     f_t, f_n, needed, available = records
     acc, F = scratch
     _forces(t_idx, c2, x, v, z, v_n, R, dt, H, C, Bv, Bq, F_ext, thrust, r_p, conv, memory, st, kz, F)
-    if P.shape[0] == 0:
+    if ct.P.shape[0] == 0:
         for d in range(6):
             a = 0.0
             for e in range(6):
                 a += Mt_inv[d, e] * F[e]
             acc[d] = a
     else:
-        contact_states(R, x, v, P, S, N, TH, kin)
-        if not (st == 0 and decide_modes(dt, N, TH, CF, DF, MU, sideways, mode, fdir, anchor, anchored, Mt_inv,
-                                         kin, solve, F_try, F, acc, f_t, f_n, needed, available, v_tol)):
-            contact_forces(dt, N, TH, CF, DF, MU, sideways, mode, fdir, anchor, anchored, Mt_inv, kin, solve,
-                           F, acc, f_t, f_n)
+        contact_states(R, x, v, ct, cs, kin)
+        if not (st == 0 and decide_modes(dt, ct, cs, R, x, Mt_inv, kin, solve, F_try, F, acc, f_t, f_n, needed,
+                                         available, v_tol)):
+            contact_forces(dt, ct, cs, Mt_inv, kin, solve, F, acc, f_t, f_n, v_tol)
     for d in range(6):
         kv[st, d] = acc[d]
 
@@ -248,9 +251,12 @@ def _trial_state(st, h, x, v, z, kx, kv, kz, xs, vs, zs):
 
 
 @njit(cache=True, _nrt=False, forceinline=True)
-def _record(n, x, v, mode, records, tpos, out_x, out_v, out_mode, out_fn, out_ft, out_need, out_avail, out_tpos):
-    """Row ``n`` of the outputs: the state and the contacts at the step start."""
+def _record(n, x, v, cs, records, tpos, out_x, out_v, out_mode, out_fn, out_ft, out_need, out_avail, out_tpos,
+            out_slide, out_work):
+    """Row ``n`` of the outputs: the state and the contacts at the step start, and each contact's slide
+    [m] and friction work [J] over the step that ended there (then reset for the next step)."""
     f_t, f_n, needed, available = records
+    mode, fdir, anchA, anchP, anchored, landed, slide, work = cs
     for d in range(6):
         out_x[n, d] = x[d]
         out_v[n, d] = v[d]
@@ -263,13 +269,29 @@ def _record(n, x, v, mode, records, tpos, out_x, out_v, out_mode, out_fn, out_ft
         out_avail[n, c] = available[c]
         out_tpos[n, c, 0] = tpos[c, 0]
         out_tpos[n, c, 1] = tpos[c, 1]
+        out_slide[n, c, 0] = slide[c, 0]
+        out_slide[n, c, 1] = slide[c, 1]
+        out_work[n, c] = work[c]
+        slide[c, 0] = 0.0
+        slide[c, 1] = 0.0
+        work[c] = 0.0
+
+
+@njit(cache=True, _nrt=False, forceinline=True)
+def _slid_off(cs):
+    """True when a contact that had touched the landing is off it (past a tube's end or the fender's)."""
+    mode, fdir, anchA, anchP, anchored, landed, slide, work = cs
+    for c in range(mode.shape[0]):
+        if mode[c] == OFF and landed[c]:
+            return True
+    return False
 
 
 @njit(cache=True, nogil=True)
 def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
                 conv, Kh, pairs_i, pairs_j, n_hist, ss_A, ss_B, ss_C, ss_in, ss_out, ss_pair,
                 ct, v_tol, limit_trans, limit_rot, out_x, out_v, out_mode, out_fn, out_ft, out_need,
-                out_avail, out_tpos, progress):
+                out_avail, out_tpos, out_slide, out_work, progress):
     """Integrate the Cummins equation with classic RK4; returns ``(status, last_step)``.
 
     Runs without the GIL (``nogil``): another thread may poll ``progress`` meanwhile. All buffers are
@@ -299,22 +321,22 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
         (block-diagonal) form: ``ss_A`` (ns, 2) the diagonal entry and the entry coupling each state
         to its 2×2-block partner ``ss_pair`` (ns,) (−1 for a real pole), ``ss_B`` (ns,), ``ss_C``
         (ns,), input DOF ``ss_in`` (ns,), output DOF ``ss_out`` (ns,).
-    ct : tuple
-        Contacts ``(P, S, N, TH, CF, DF, MU, sideways)``: fender points (body), plane points, plane
-        normals, horizontal tangents (Nc, 3) in the local frame, stiffness and damping (Nc,), Stribeck
-        parameters (Nc, 5), friction also sideways — see :mod:`boatland.contact.fender` (Nc = 0 for
-        none).
+    ct : Contacts
+        The fender contacts in the local frame (:class:`boatland.contact.fender.Contacts`; Nc = 0 for none).
     v_tol : float
-        Speed below which a contact's sliding direction is not defined [m/s].
+        Speed below which a rigid contact's sliding direction is not defined [m/s].
     limit_trans, limit_rot : float
         Runaway limits [m], [rad].
     out_x, out_v : (n_steps + 1, 6)
         Trajectory.
     out_mode, out_fn, out_need, out_avail : (n_steps + 1, Nc)
-        Per step start: contact mode (0 open, 1 stick, 2 slip), normal force, stick force needed,
-        friction available μ(|u|) f_n.
+        Per step start: contact mode (0 open, 1 stick, 2 slip, 3 off the landing), normal force, force
+        that would hold the contact stuck, friction available (μ_s f_n, or μ(|u|) f_n while sliding).
     out_ft, out_tpos : (n_steps + 1, Nc, 2)
-        Tangential (vertical, horizontal) friction force and fender-point position.
+        Tangential (vertical, horizontal) friction force and the fender's position on the landing.
+    out_slide : (n_steps + 1, Nc, 2)
+        Sliding of the fender over the tube during the step that ended at each row [m]; ``out_work``
+        (n_steps + 1, Nc) the friction work of that step [J] (never positive).
     progress : (1,) int64
         Progress counter: set to the number of steps completed at the start of every step, and to
         ``last`` on return.
@@ -322,16 +344,15 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
     Returns
     -------
     status : int
-        :data:`STATUS_OK`, :data:`STATUS_NAN` or :data:`STATUS_RUNAWAY` (see :data:`STATUS_MESSAGES`).
+        :data:`STATUS_OK`, :data:`STATUS_NAN`, :data:`STATUS_RUNAWAY` or :data:`STATUS_SLID_OFF`
+        (see :data:`STATUS_MESSAGES`).
     last : int
         Last step written.
     """
-    P, S, N, TH, CF, DF, MU, sideways = ct
-    nc = P.shape[0]
-    cs = (np.zeros(nc, dtype=np.int64), np.zeros((nc, 2)), np.zeros((nc, 2)), np.zeros(nc, dtype=np.bool_))
-    mode, fdir, anchor, anchored = cs
-    ws = contact_workspace(nc, sideways)
-    tpos = ws[0][4]  # tangential positions of the contacts at the stage state (contact_states)
+    nc = ct.P.shape[0]
+    cs = contact_state_arrays(nc)
+    ws = _workspace(nc, ct.sideways)
+    tpos = ws[0][6]  # positions of the contacts on the landing at the stage state (contact_states)
     records = (np.zeros((nc, 2)), np.zeros(nc), np.zeros(nc), np.zeros(nc))  # f_t, f_n, needed, available
     n_s = ss_B.shape[0]
     memory = (Kh, pairs_i, pairs_j, ss_A, ss_B, ss_C, ss_in, _output_order(ss_out), ss_pair)
@@ -360,10 +381,15 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
             _stage(n, st, xs, vs, zs, v, R, dt, H, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, conv, memory, ct, cs, ws,
                    v_tol, kv, kz, scratch, records)
             if st == 0:
-                _record(n, x, v, mode, records, tpos, out_x, out_v, out_mode, out_fn, out_ft, out_need,
-                        out_avail, out_tpos)
+                _record(n, x, v, cs, records, tpos, out_x, out_v, out_mode, out_fn, out_ft, out_need,
+                        out_avail, out_tpos, out_slide, out_work)
+                if _slid_off(cs):
+                    progress[0] = n
+                    return STATUS_SLID_OFF, n
                 if n == n_steps:
                     break
+            if nc:
+                accumulate_sliding(ct, cs, ws[0], records[0], RK4_WEIGHTS[st] * dt)
         if n == n_steps:
             break
         for d in range(6):
@@ -387,13 +413,6 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
                 out_v[n + 1, :] = v
                 progress[0] = n + 1
                 return STATUS_RUNAWAY, n + 1
-        # a contact that stuck during this step is anchored where it came to rest
-        for c in range(nc):
-            if mode[c] == STICK and not anchored[c]:
-                anchor[c, 0], anchor[c, 1] = tangential_position(x, P[c], TH[c])
-                anchored[c] = True
-            elif mode[c] != STICK:
-                anchored[c] = False
         head = (head + 1) % nb
         for d in range(6):
             vbuf[head, d] = v[d]

@@ -6,6 +6,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from boatland.contact.fender import Contacts, no_contacts
 from boatland.integrate.cummins import STATUS_MESSAGES, run_cummins
 from boatland.model.hydrodb import HydroDB
 from boatland.model.radiation import RadiationMemory
@@ -46,17 +47,17 @@ class MotionArrays:
             "mode": np.zeros((n_steps + 1, nc), dtype=np.int64), "fn": np.zeros((n_steps + 1, nc)),
             "ft": np.zeros((n_steps + 1, nc, 2)), "needed": np.zeros((n_steps + 1, nc)),
             "available": np.zeros((n_steps + 1, nc)), "tpos": np.zeros((n_steps + 1, nc, 2)),
+            "slide": np.zeros((n_steps + 1, nc, 2)), "work": np.zeros((n_steps + 1, nc)),
         }
 
     def run(self, dt: float, n_steps: int, *, F_ext=None, thrust=None, r_p=(0.0, 0.0, 0.0), x0=None, v0=None,
             Bv=None, Bq=None, contacts=None, v_tol: float = 1e-6, limit_trans: float = 1e3,
             limit_rot: float = 1.0, progress=None, out=None):
         """Integrate; returns a dict of arrays (t, x, v and, with contacts, mode, fn, ft, needed,
-        available, tpos) plus ``status`` and ``message``.
+        available, tpos, slide, work) plus ``status`` and ``message``.
 
         ``F_ext`` (2 n_steps + 1, 6) and ``thrust`` (2 n_steps + 1,) are sampled at half steps;
-        ``contacts`` is the tuple ``(P, S, N, TH, CF, DF, MU, sideways)`` of
-        :func:`boatland.integrate.run_cummins` in the local frame. ``progress``, an int64 array of shape
+        ``contacts`` is a :class:`boatland.contact.fender.Contacts` in the local frame (None: none). ``progress``, an int64 array of shape
         (1,), receives the number of steps completed while the kernel runs (it releases the GIL, so
         another thread can poll it for a progress bar). ``out``: preallocated output arrays from
         :meth:`allocate_outputs` (rows below the progress count are final while the kernel runs — a
@@ -69,8 +70,9 @@ class MotionArrays:
             raise ValueError(f"F_ext must be ({m}, 6) and thrust ({m},) for {n_steps} steps (half steps)")
         vec = lambda a: np.zeros(6) if a is None else np.asarray(a, dtype=float).reshape(6)  # noqa: E731
         if contacts is None:
-            e3 = np.zeros((0, 3))
-            contacts = (e3, e3, e3, e3, np.zeros(0), np.zeros(0), np.zeros((0, 5)), True)
+            contacts = no_contacts()
+        elif not isinstance(contacts, Contacts):
+            raise ValueError("contacts must be a boatland.contact.fender.Contacts (see contact_set)")
         if progress is None:
             progress = np.zeros(1, dtype=np.int64)
         elif not (isinstance(progress, np.ndarray) and progress.dtype == np.int64 and progress.shape == (1,)):
@@ -85,7 +87,7 @@ class MotionArrays:
             np.asarray(r_p, dtype=float), vec(x0), vec(v0), self.conv, self.Kh, self.pairs_i, self.pairs_j,
             self.n_hist, self.ss_A, self.ss_B, self.ss_C, self.ss_in, self.ss_out, self.ss_pair, contacts, float(v_tol),
             float(limit_trans), float(limit_rot), out["x"], out["v"], out["mode"], out["fn"], out["ft"],
-            out["needed"], out["available"], out["tpos"], progress)
+            out["needed"], out["available"], out["tpos"], out["slide"], out["work"], progress)
         out = {k: a[:last + 1] for k, a in out.items()}
         out["t"] = np.arange(last + 1) * dt
         out["status"], out["message"] = int(status), STATUS_MESSAGES[int(status)]

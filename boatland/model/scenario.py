@@ -124,8 +124,9 @@ class Scenario:
     def time_step(self, db: HydroDB | None = None) -> float:
         """The RK4 step [s]: ``simulation.dt`` if given, else the default rule
 
-        ``dt = min(0.05 s, Tp_min / 100, T_contact / 20)`` — Tp_min the shortest peak period of the
-        sea (seed 001 §5.2.3 used Tp/100), T_contact the period of the fastest fender contact mode
+        ``dt = min(0.05 s, Tp_min / 100, T_contact / 20, T_shear / 8)`` — Tp_min the shortest peak
+        period of the sea (Ferreira González 2023 §5.2.3 used Tp/100), T_contact the period of the
+        fastest normal fender contact mode and T_shear that of the stuck rubber's fastest mode
         (:func:`boatland.model.scenario_checks.contact_period`; only with a database and a fender).
         """
         if self.simulation.dt is not None:
@@ -136,7 +137,7 @@ class Scenario:
         if db is not None and self.fender is not None:
             from boatland.model.scenario_checks import contact_period
 
-            dt = min(dt, contact_period(self, db).period / 20.0)
+            dt = min(dt, contact_period(self, db).dt_limit)
         return float(dt)
 
     def n_steps(self, db: HydroDB | None = None) -> int:

@@ -30,14 +30,17 @@ from boatland.model.scenario_parts import rotation_2d
 from boatland.model.seastate import OUT_OF_BAND_WARN, MeasuredRecord, RegularWave
 from boatland.model.tomlspec import SpecError
 
-__all__ = ["ContactPeriod", "ScenarioCheck", "check_against", "contact_period", "roll_critical_damping"]
+__all__ = ["ContactPeriod", "ScenarioCheck", "check_against", "contact_directions", "contact_period",
+           "roll_critical_damping"]
 
 #: The fender must sit in this front fraction of the hull's length ...
 BOW_FRACTION = 0.2
 #: ... and at most this fraction of the length ahead of the stem (fender depth, bow overhang).
 AHEAD_FRACTION = 0.1
-#: dt must resolve the fastest contact mode with this many steps.
+#: dt must resolve the fastest normal contact mode with this many steps (impacts, loss of contact) ...
 STEPS_PER_CONTACT_PERIOD = 20
+#: ... and the stuck rubber's fastest (linear) shear mode with this many.
+STEPS_PER_SHEAR_PERIOD = 8
 
 
 @dataclass(frozen=True)
@@ -75,20 +78,38 @@ class ContactPeriod:
     Attributes
     ----------
     period : float
-        :math:`T_c = 2\pi / \max|\lambda|` [s], λ the eigenvalues of the linear system
+        :math:`T_c = 2\pi / \max|\lambda|` [s] of the normal contact: λ the eigenvalues of
         :math:`(M + A_\infty)\ddot x + D\dot x + K x = 0` with :math:`K = c_f \sum_i g_i g_i^\top`,
         :math:`D = d_f \sum_i g_i g_i^\top`, :math:`g_i = (n_i, r_i \times n_i)` the generalized
         direction of contact i (normal n_i in the body frame, point r_i): all contacts closed.
+    shear_period : float
+        The same with the rubber's shear springs and dampers added in the tangential directions
+        :math:`t_v = e_z` (and :math:`t_h = e_z \times n_i` with sideways friction) — the stuck fender's
+        fastest mode [s]; ``inf`` for a rigid stick.
     m_eff : tuple of float
         Effective mass of the vessel at each contact point along its normal,
         :math:`m_{eff} = 1 / (g^\top (M + A_\infty)^{-1} g)` [kg].
+    m_eff_vertical : tuple of float
+        The same vertically (:math:`g = (e_z, r_i \times e_z)`) [kg]: it sets the critical shear damping.
     undamped : tuple of float
         :math:`T_f = 2\pi\sqrt{m_{eff}/c_f}` of each contact alone [s].
+    shear_damping : tuple of float
+        c_t of each contact [N s/m] (the file's, or ζ·2√(k_t m_eff,vertical)); 0 for a rigid stick.
     """
 
     period: float
+    shear_period: float
     m_eff: tuple[float, ...]
+    m_eff_vertical: tuple[float, ...]
     undamped: tuple[float, ...]
+    shear_damping: tuple[float, ...]
+
+    @property
+    def dt_limit(self) -> float:
+        """Largest time step the contact allows [s]: T_c / 20 for the normal contact (impacts) and
+        T_shear / 8 for the stuck rubber's linear mode (RK4 at ωΔt = 2π/8: period 0.3 % short,
+        amplitude kept to 0.1 % per period)."""
+        return min(self.period / STEPS_PER_CONTACT_PERIOD, self.shear_period / STEPS_PER_SHEAR_PERIOD)
 
 
 def _mass(db: HydroDB) -> np.ndarray:
@@ -98,24 +119,54 @@ def _mass(db: HydroDB) -> np.ndarray:
     return np.asarray(db.M, float) + np.asarray(A_inf, float)
 
 
-def contact_period(scenario, db: HydroDB) -> ContactPeriod:
-    """The fastest contact mode of ``scenario``'s fender on the vessel of ``db`` (:class:`ContactPeriod`)."""
-    f, land = scenario.fender, scenario.landing
-    Ma = _mass(db)
-    Rt = rotation_2d(scenario.vessel.heading_deg).T  # global → body
-    G = []
-    for r, strut in zip(f.points_array, land.struts):
-        n = np.array([*(Rt @ strut.normal), 0.0])
-        G.append(np.concatenate([n, np.cross(r, n)]))
-    G = np.array(G)
-    Minv = np.linalg.inv(Ma)
-    K = f.stiffness * G.T @ G
-    D = f.damping * G.T @ G
+def _fastest_period(Minv: np.ndarray, K: np.ndarray, D: np.ndarray) -> float:
     A = np.block([[np.zeros((6, 6)), np.eye(6)], [-Minv @ K, -Minv @ D]])
     lam = float(np.max(np.abs(np.linalg.eigvals(A))))
-    m_eff = tuple(float(1.0 / (g @ Minv @ g)) for g in G)
+    return 2 * math.pi / lam if lam > 0 else math.inf
+
+
+def contact_directions(scenario) -> list[tuple[np.ndarray, np.ndarray, np.ndarray]]:
+    """Per contact at rest, body frame: (normal g_n, vertical g_v, horizontal g_h) generalized directions
+    :math:`g = (d, r \times d)` of the fender point r along n (landing → vessel), e_z and e_z × n."""
+    f, land = scenario.fender, scenario.landing
+    Rt = rotation_2d(scenario.vessel.heading_deg).T  # global → body
+    out = []
+    for r, strut in zip(f.points_array, land.struts):
+        n = np.array([*(Rt @ strut.normal), 0.0])
+        tv = np.array([0.0, 0.0, 1.0])
+        th = np.cross(tv, n)
+        out.append(tuple(np.concatenate([d, np.cross(r, d)]) for d in (n, tv, th)))
+    return out
+
+
+def contact_period(scenario, db: HydroDB) -> ContactPeriod:
+    """The contact dynamics of ``scenario``'s fender on the vessel of ``db`` (:class:`ContactPeriod`)."""
+    f = scenario.fender
+    Minv = np.linalg.inv(_mass(db))
+    dirs = contact_directions(scenario)
+    Gn = np.array([g[0] for g in dirs])
+    K = f.stiffness * Gn.T @ Gn
+    D = f.damping * Gn.T @ Gn
+    period = _fastest_period(Minv, K, D)
+    m_eff = tuple(float(1.0 / (g @ Minv @ g)) for g in Gn)
+    m_vert = tuple(float(1.0 / (g[1] @ Minv @ g[1])) for g in dirs)
+    if f.rigid:
+        c_t = (0.0,) * len(dirs)
+        shear_period = math.inf
+    else:
+        if f.shear_damping is not None:
+            c_t = (f.shear_damping,) * len(dirs)
+        else:
+            c_t = tuple(2 * f.shear_damping_ratio * math.sqrt(f.shear_stiffness * m) for m in m_vert)
+        Kt, Dt = K.copy(), D.copy()
+        for (_, gv, gh), c in zip(dirs, c_t):
+            for g in ((gv, gh) if f.sideways else (gv,)):
+                Kt += f.shear_stiffness * np.outer(g, g)
+                Dt += c * np.outer(g, g)
+        shear_period = _fastest_period(Minv, Kt, Dt)
     undamped = tuple(2 * math.pi * math.sqrt(m / f.stiffness) for m in m_eff)
-    return ContactPeriod(period=2 * math.pi / lam, m_eff=m_eff, undamped=undamped)
+    return ContactPeriod(period=period, shear_period=shear_period, m_eff=m_eff, m_eff_vertical=m_vert,
+                         undamped=undamped, shear_damping=tuple(float(c) for c in c_t))
 
 
 def roll_critical_damping(db: HydroDB) -> float:
@@ -182,16 +233,26 @@ def check_against(scenario, db: HydroDB) -> ScenarioCheck:
     notes.append(f"time step dt = {dt:.5g} s{rule}, {scenario.n_steps(db if db.M is not None else None)} steps")
     if scenario.fender is not None and scenario.landing is not None and db.M is not None:
         cp = contact_period(scenario, db)
-        notes.append(f"fender contact: fastest mode period {cp.period:.4g} s; effective mass along the normal "
+        f = scenario.fender
+        notes.append(f"fender contact: fastest normal mode period {cp.period:.4g} s; effective mass along the normal "
                      + ", ".join(f"{m:.4g} kg" for m in cp.m_eff) + "; T_f = 2π√(m_eff/c_f) = "
                      + ", ".join(f"{t:.4g} s" for t in cp.undamped))
-        limit = cp.period / STEPS_PER_CONTACT_PERIOD
+        if f.rigid:
+            notes.append("fender shear: rigid stick (the needed stick force is solved with the motion)")
+        else:
+            notes.append(f"fender shear: k_t = {f.shear_stiffness:.4g} N/m, c_t = "
+                         + ", ".join(f"{c:.4g}" for c in cp.shear_damping) + " N s/m per contact"
+                         + ("" if f.shear_damping is not None else
+                            f" ({f.shear_damping_ratio:g} of critical on {min(cp.m_eff_vertical):.4g} kg)")
+                         + f"; fastest stuck mode period {cp.shear_period:.4g} s")
+        limit = cp.dt_limit
         if dt > limit * (1 + 1e-9):
-            problems.append(("simulation.dt", f"{dt:g} s is too large for the fender: its fastest contact mode has "
-                                              f"period {cp.period:.3g} s (c_f = {scenario.fender.stiffness:g} N/m, "
-                                              f"d_f = {scenario.fender.damping:g} N s/m, effective mass "
-                                              f"{min(cp.m_eff):.4g} kg); use dt ≤ {limit:.3g} s (period / "
-                                              f"{STEPS_PER_CONTACT_PERIOD})"))
+            which = (f"its fastest normal contact mode has period {cp.period:.3g} s (c_f = {f.stiffness:g} N/m, "
+                     f"d_f = {f.damping:g} N s/m, effective mass {min(cp.m_eff):.4g} kg): period / "
+                     f"{STEPS_PER_CONTACT_PERIOD}" if limit == cp.period / STEPS_PER_CONTACT_PERIOD else
+                     f"its stuck shear mode has period {cp.shear_period:.3g} s (k_t = {f.shear_stiffness:g} N/m): "
+                     f"period / {STEPS_PER_SHEAR_PERIOD}")
+            problems.append(("simulation.dt", f"{dt:g} s is too large for the fender: {which}; use dt ≤ {limit:.3g} s"))
     if scenario.sea is not None:
         problems_w, warns_w = _waves_in_band(scenario, db)
         problems += problems_w

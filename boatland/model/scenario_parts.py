@@ -116,11 +116,14 @@ class Radiation:
 @dataclass(frozen=True)
 class Strut:
     """A vertical strut (tube) of the boat landing: axis ``position`` (global) [m], ``diameter`` [m],
-    contact-plane normal direction ``normal_deg`` (from the landing towards the vessel)."""
+    the horizontal direction ``normal_deg`` from the landing towards the vessel at this tube (where the
+    fender meets it at rest), and its ends ``bottom`` and ``top`` (global z [m]; ±inf: unbounded)."""
 
     position: tuple[float, float]
     diameter: float
     normal_deg: float
+    bottom: float = -math.inf
+    top: float = math.inf
 
     @property
     def normal(self) -> np.ndarray:
@@ -177,16 +180,28 @@ class Fender:
     coefficient :math:`\mu(v) = \mu_k + (\mu_s - \mu_k)\,e^{-(|v|/v_{ref})^\delta} + k_v |v|`
     (Stribeck, seed 001 eq. 2.78), :math:`\mu_s` while stuck.
 
+    Tangentially the rubber shears while it sticks (stiffness k_t, damping c_t per contact) and slides
+    once its force reaches μ f_n (:mod:`boatland.contact.fender`); ``shear_stiffness = inf`` is the
+    rigid stick of Ferreira González (2023).
+
     Attributes
     ----------
     points : tuple of (x, y, z)
-        Contact points, body frame [m]; ``points[i]`` meets ``landing.struts[i]``.
+        Centre of the fender line at each contact, body frame [m]; ``points[i]`` meets ``landing.struts[i]``.
     stiffness, damping : float
         c_f [N/m] and d_f [N s/m] per contact.
+    shear_stiffness : float
+        k_t [N/m] per contact (``inf``: rigid stick).
+    shear_damping : float or None
+        c_t [N s/m] per contact as given; None: ``shear_damping_ratio`` of critical (needs the vessel).
+    shear_damping_ratio : float
+        ζ of the shear mode, c_t = 2ζ√(k_t m_eff) (used when ``shear_damping`` is None).
+    width : float
+        Length of the fender line at each contact, along the body y axis [m] (0: a point).
     mu_s, mu_k, k_v, v_ref, delta : float
         Friction law ([-], [-], [s/m], [m/s], [-]).
     sideways : bool
-        Friction also horizontally along the contact plane (not only vertically).
+        Friction (and shear) also horizontally along the tube, not only vertically.
     preset : str or None
         The preset the values came from (explicit keys override it).
     """
@@ -200,7 +215,16 @@ class Fender:
     v_ref: float
     delta: float
     sideways: bool
+    shear_stiffness: float = math.inf
+    shear_damping: float | None = None
+    shear_damping_ratio: float = 0.0
+    width: float = 0.0
     preset: str | None = None
+
+    @property
+    def rigid(self) -> bool:
+        """True for the rigid stick (no shear compliance)."""
+        return not math.isfinite(self.shear_stiffness)
 
     @property
     def points_array(self) -> np.ndarray:

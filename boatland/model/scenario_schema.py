@@ -16,7 +16,8 @@ from boatland.irf.impulse import TAILS, TAPERS
 from boatland.model.tomlspec import Key, Table, TableList, Vector
 from boatland.model.tomlspec import json_schema as _json_schema
 
-__all__ = ["DT_MAX", "FENDER_PRESETS", "FENDER_REQUIRED", "LANDING_COMPACT", "SCENARIO_SCHEMA",
+__all__ = ["DT_MAX", "FENDER_PRESETS", "FENDER_REQUIRED", "LANDING_COMPACT", "LANDING_COMPACT_OPTIONAL",
+           "SCENARIO_SCHEMA", "SHEAR_STIFFNESS_DEFAULT", "SHEAR_DAMPING_RATIO_DEFAULT",
            "SEA_KINDS", "SEA_KIND_KEYS", "SEA_PART_KINDS", "json_schema"]
 
 #: Largest default time step [s] (the default is min(DT_MAX, Tp/100, T_contact/20)).
@@ -33,15 +34,22 @@ ROLL_LIMIT_DEFAULT = (10.0,)
 #: Fender presets: values a ``preset`` fills in (explicit keys override). Seed 001 Table 5.4
 #: (model scale, Model 2 in the TUHH tank): friction μ_k 0.7, μ_s 0.9, Stribeck k_v 0.2, δ 1.5,
 #: v_ref 0.2 m/s; spring c_f 0.5 kN/m, damper d_f 0.25 kN s/m.
-FENDER_PRESETS: dict[str, dict[str, float]] = {
+#: The tank fender is a rigid stick there (the thesis gives no shear stiffness for it).
+FENDER_PRESETS: dict[str, dict[str, float | str]] = {
     "seed001-table5.4": {"mu_k": 0.7, "mu_s": 0.9, "k_v": 0.2, "delta": 1.5, "v_ref": 0.2,
-                         "stiffness": 500.0, "damping": 250.0},
+                         "stiffness": 500.0, "damping": 250.0, "shear_stiffness": "rigid"},
 }
+#: Shear stiffness of a full-scale CTV bow fender per contact [N/m]: 3000 kN/m, Wu (2014) as used by
+#: Grøtting (2015, §3.2.2, "Fender modelling") for two 8-inch D fenders; damping 5 % of critical (ibid.).
+SHEAR_STIFFNESS_DEFAULT = 3.0e6
+SHEAR_DAMPING_RATIO_DEFAULT = 0.05
 #: Fender keys that must be given when no preset supplies them.
 FENDER_REQUIRED = ("stiffness", "damping", "mu_s", "mu_k")
 
 #: Keys of the compact landing form (two struts generated from the pile); all four are needed.
 LANDING_COMPACT = ("bearing_deg", "strut_spacing", "strut_diameter", "standoff")
+#: Optional keys of the compact form (the tubes' ends).
+LANDING_COMPACT_OPTIONAL = ("strut_bottom", "strut_top")
 
 SEA_KINDS = ("jonswap", "pm", "tma", "regular", "measured", "none")
 SEA_PART_KINDS = ("jonswap", "pm", "tma")
@@ -110,7 +118,8 @@ def _fender_json_rules() -> dict[str, Any]:
 
 
 def _landing_json_rules() -> dict[str, Any]:
-    return {"oneOf": [{"required": ["struts"], "properties": {k: False for k in LANDING_COMPACT}},
+    return {"oneOf": [{"required": ["struts"],
+                       "properties": {k: False for k in LANDING_COMPACT + LANDING_COMPACT_OPTIONAL}},
                       {"required": list(LANDING_COMPACT), "properties": {"struts": False}}]}
 
 
@@ -145,8 +154,9 @@ SCENARIO_SCHEMA = Table({
         }, doc="additional (viscous) damping"),
     }, doc="the vessel and where it starts"),
     "radiation": Table({
-        "method": Key(str, default="convolution", choices=("convolution", "state_space"),
-                      doc="radiation memory: convolution of K(t), or its fitted state-space system"),
+        "method": Key(str, default="state_space", choices=("convolution", "state_space"),
+                      doc="radiation memory: the fitted state-space system of K(t) (passive; fast), or the "
+                          "convolution of K(t) itself"),
         "memory": Key(float, default=MEMORY_DEFAULT, gt=0.0, doc="memory length T_K of K(t) [s]"),
         "tail": Key(str, default="auto", choices=TAILS, doc="how B(ω) continues above the database's band"),
         "taper": Key(str, default="none", choices=TAPERS, doc="time window on K(t)"),
@@ -164,11 +174,15 @@ SCENARIO_SCHEMA = Table({
         "strut_diameter": Key(float, gt=0.0, doc="compact form: strut (tube) diameter [m]"),
         "standoff": Key(float, gt=0.0, doc="compact form: distance from the pile surface to the strut axes, "
                                            "along bearing_deg [m]"),
+        "strut_bottom": Key(float, doc="compact form: lower end of the tubes, global z [m] (default: unbounded)"),
+        "strut_top": Key(float, doc="compact form: upper end of the tubes, global z [m] (default: unbounded)"),
         "struts": TableList(Table({
             "position": Vector(size=2, names=("x", "y"), required=True, doc="global position of the strut axis [m]"),
             "diameter": Key(float, required=True, gt=0.0, doc="strut diameter [m]"),
-            "normal_deg": Key(float, required=True, doc="horizontal direction of the contact-plane normal, "
-                                                        "from the landing towards the vessel, global [deg]"),
+            "normal_deg": Key(float, required=True, doc="horizontal direction from the landing towards the "
+                                                        "vessel at this strut, global [deg]"),
+            "bottom": Key(float, doc="lower end of the tube, global z [m] (default: unbounded)"),
+            "top": Key(float, doc="upper end of the tube, global z [m] (default: unbounded)"),
         }, doc="one vertical strut (tube) of the boat landing"), min_size=1,
             doc="explicit form: the struts; struts[i] meets fender.points[i]"),
     }, optional=True, json_extra=_landing_json_rules(),
@@ -181,6 +195,18 @@ SCENARIO_SCHEMA = Table({
                          doc="contact points in the body frame [m], one per strut (points[i] meets struts[i])"),
         "stiffness": Key(float, gt=0.0, doc="normal spring c_f per contact [N/m]"),
         "damping": Key(float, ge=0.0, doc="normal damper d_f per contact [N s/m]"),
+        "shear_stiffness": Key((float, str), gt=0.0, choices=("rigid",),
+                               doc="shear stiffness k_t of the rubber per contact, vertically and along the "
+                                   f"tube [N/m], or \"rigid\" (a rigid stick); default {SHEAR_STIFFNESS_DEFAULT:g} "
+                                   "(Wu 2014, as used by Grøtting 2015)"),
+        "shear_damping": Key(float, ge=0.0, doc="shear damping c_t per contact [N s/m] (default: "
+                                                "shear_damping_ratio of critical)"),
+        "shear_damping_ratio": Key(float, ge=0.0, lt=1.0,
+                                   doc="shear damping as a fraction ζ of critical, c_t = 2 ζ √(k_t m_eff) with "
+                                       "m_eff the vessel's effective mass at the contact, vertically; default "
+                                       f"{SHEAR_DAMPING_RATIO_DEFAULT:g} (Grøtting 2015)"),
+        "width": Key(float, ge=0.0, doc="length of the fender line at each contact, along the body y axis [m] "
+                                        "(default 0: a point); a tube beyond its end is off the landing"),
         "mu_s": Key(float, gt=0.0, le=2.0, doc="static friction coefficient μ_s"),
         "mu_k": Key(float, gt=0.0, le=2.0, doc="kinetic friction coefficient μ_k (≤ μ_s)"),
         "k_v": Key(float, ge=0.0, doc="Stribeck viscous constant k_v [s/m] (default 0)"),

@@ -22,16 +22,20 @@ from boatland.errors import BoatlandInputError, BoatlandWarning
 from boatland.model.scenario_parts import (Fender, InitialState, Landing, Sea, Simulation, Strut, Thrust,
                                            VesselSetup, derive_position, rotation_2d, unit)
 from boatland.model.scenario_schema import (FENDER_PRESETS, FENDER_REQUIRED, LANDING_COMPACT, SCENARIO_SCHEMA,
-                                            SEA_KIND_KEYS, SEA_KINDS)
+                                            SEA_KIND_KEYS, SEA_KINDS, SHEAR_DAMPING_RATIO_DEFAULT,
+                                            SHEAR_STIFFNESS_DEFAULT)
 from boatland.model.seastate import MeasuredRecord, RegularWave, SeaState, SpectrumPart, spectrum_part_problems
 from boatland.model.tomlspec import Problems, SpecError, _did_you_mean
 from boatland.waves.spectra import spectrum_band
 
 __all__ = ["Context", "fender", "initial", "landing", "sea", "simulation", "thrust", "vessel"]
 
-#: Fender key defaults when neither the file nor a preset gives them (Stribeck shape of seed 001
-#: Table 5.4; no viscous term).
-FENDER_DEFAULTS = {"k_v": 0.0, "v_ref": 0.2, "delta": 1.5}
+#: Fender key defaults when neither the file nor a preset gives them (Stribeck shape of Ferreira
+#: González 2023 Table 5.4, no viscous term; the compliant rubber of Grøtting 2015 §3.2.2; a point).
+FENDER_DEFAULTS = {"k_v": 0.0, "v_ref": 0.2, "delta": 1.5, "shear_stiffness": SHEAR_STIFFNESS_DEFAULT,
+                   "shear_damping_ratio": SHEAR_DAMPING_RATIO_DEFAULT, "width": 0.0}
+_FENDER_KEYS = ("stiffness", "damping", "mu_s", "mu_k", "k_v", "v_ref", "delta", "shear_stiffness",
+                "shear_damping", "shear_damping_ratio", "width")
 #: Seed 001 §2.5.1: the Stribeck exponent δ lies in [0.5, 2.0].
 DELTA_USUAL = (0.5, 2.0)
 #: Variance fraction above the "shortest significant period" of a spectrum (dt ≤ that period / 20).
@@ -100,12 +104,19 @@ def landing(ctx: Context) -> Landing | None:
         n = unit(beta)
         port = np.array([n[1], -n[0]])  # the vessel's port side, looking at the landing against n
         centre = c + (D / 2 + off) * n
-        struts = tuple(Strut((float(x), float(y)), dd, beta) for x, y in
+        bottom, top = d.get("strut_bottom", -math.inf), d.get("strut_top", math.inf)
+        if bottom >= top:
+            ctx.add("landing.strut_top", f"{top:g} m is not above landing.strut_bottom = {bottom:g} m")
+            return None
+        struts = tuple(Strut((float(x), float(y)), dd, beta, bottom, top) for x, y in
                        (centre + 0.5 * spacing * port, centre - 0.5 * spacing * port))
         return Landing(monopile_diameter=D, monopile_position=(float(c[0]), float(c[1])), struts=struts,
                        bearing_deg=beta, diffraction=d.get("diffraction"))
-    struts = tuple(Strut(tuple(t["position"]), t["diameter"], t["normal_deg"]) for t in d["struts"])
+    struts = tuple(Strut(tuple(t["position"]), t["diameter"], t["normal_deg"], t.get("bottom", -math.inf),
+                         t.get("top", math.inf)) for t in d["struts"])
     for i, st in enumerate(struts):
+        if st.bottom >= st.top:
+            ctx.add(f"landing.struts[{i}].top", f"{st.top:g} m is not above its bottom {st.bottom:g} m")
         rel = np.array(st.position) - c
         dist = float(np.linalg.norm(rel))
         if dist <= (D + st.diameter) / 2:
@@ -144,7 +155,12 @@ def fender(ctx: Context) -> Fender | None:
         for k in FENDER_REQUIRED:
             if k not in raw:
                 ctx.add(f"fender.{k}", f"missing (or give preset = {next(iter(FENDER_PRESETS))!r})")
-    values.update({k: d[k] for k in (*FENDER_REQUIRED, *FENDER_DEFAULTS) if k in d})
+    values.update({k: d[k] for k in _FENDER_KEYS if k in d})
+    if "shear_damping" in raw and "shear_damping_ratio" in raw:
+        ctx.add("fender.shear_damping_ratio", "give either fender.shear_damping or fender.shear_damping_ratio, "
+                                              "not both")
+    elif "shear_damping" in raw:
+        values.pop("shear_damping_ratio", None)
     for i, (x, _, z) in enumerate(d.get("points", ())):
         if x <= 0:
             ctx.add(f"fender.points[{i}]", f"x = {x:g} m is behind the reference point (midship for the built-in "
@@ -162,7 +178,11 @@ def fender(ctx: Context) -> Fender | None:
     if not DELTA_USUAL[0] <= values["delta"] <= DELTA_USUAL[1]:
         ctx.notes.append(f"fender.delta = {values['delta']:g} is outside the range {DELTA_USUAL[0]}–{DELTA_USUAL[1]} "
                          "of seed 001 §2.5.1")
+    kt = values["shear_stiffness"]
     return Fender(points=tuple(tuple(p) for p in d["points"]), sideways=d["sideways"], preset=preset,
+                  shear_stiffness=math.inf if kt == "rigid" else float(kt),
+                  shear_damping=float(values["shear_damping"]) if "shear_damping" in values else None,
+                  shear_damping_ratio=float(values.get("shear_damping_ratio", 0.0)), width=float(values["width"]),
                   **{k: float(values[k]) for k in ("stiffness", "damping", "mu_s", "mu_k", "k_v", "v_ref", "delta")})
 
 
@@ -248,6 +268,10 @@ def _contact_geometry(ctx: Context, land: Landing, fend: Fender, thr: Thrust | N
                                        "the thrust): an impact; omit vessel.position to start just touching")
         elif explicit and gap > 1e-6:
             ctx.notes.append(f"fender.points[{i}] starts {gap:.3g} m away from struts[{i}] (no contact at t = 0)")
+        z = float(fend.points[i][2])
+        if not st.bottom <= z <= st.top:
+            ctx.add(f"fender.points[{i}]", f"z = {z:g} m is not on struts[{i}], which runs from z = {st.bottom:g} "
+                                           f"to {st.top:g} m")
         t = np.array([-n[1], n[0]])
         off = float((P[i] - s[i]) @ t)
         others = [float(np.linalg.norm(s[j] - s[i])) for j in range(len(s)) if j != i]

@@ -11,10 +11,10 @@ from dataclasses import dataclass, fields
 
 import numpy as np
 
-from boatland.contact.fender import OPEN, STICK
+from boatland.trial.events import track_landing
 from boatland.trial.result import TrialSeries
 
-__all__ = ["Columns", "LandingTracker", "world_pose", "bow_elevation"]
+__all__ = ["Columns", "LandingTracker", "settle_row", "world_pose", "bow_elevation"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -39,38 +39,24 @@ class Columns(TrialSeries):
 
 class LandingTracker:
     """Incremental :func:`boatland.trial.events.landing_offset`: feed consecutive blocks of (mode, tpos)
-    and get the same distances as the whole-run function (the landing point carries across blocks)."""
+    and get the same distances as the whole-run function (the landing positions carry across blocks)."""
 
-    def __init__(self, n_contacts: int):
-        self.anchor = np.full((n_contacts, 2), np.nan)   # landing position of the current spell
-        self.touching = np.zeros(n_contacts, bool)       # at the last row of the previous block
+    def __init__(self, n_contacts: int, start_row: int = 0):
+        self.anchor = np.full((n_contacts, 2), np.nan)   # landing position of each contact
+        self.start_row = int(start_row)                  # rows before it are settling
+        self.row = 0                                     # rows fed so far
 
     def __call__(self, mode: np.ndarray, tpos: np.ndarray) -> np.ndarray:
-        n, nc = mode.shape
-        if n and self.touching.all() and not np.isnan(self.anchor[:, 0]).any() and (mode != OPEN).all():
-            d = tpos - self.anchor[None, :, :]             # the usual case: all landed and still touching
-            return np.hypot(d[:, :, 0], d[:, :, 1])
-        out = np.full((n, nc), np.nan)
-        for c in range(nc):
-            m = mode[:, c]
-            if not np.isnan(self.anchor[c, 0]) and self.touching[c] and np.all(m != OPEN):
-                d = tpos[:, c] - self.anchor[c]          # the usual case: landed and still touching
-                out[:, c] = np.hypot(d[:, 0], d[:, 1])
-                continue
-            for k in range(n):                           # a block with a change of state
-                touching = m[k] != OPEN
-                if not touching:
-                    self.anchor[c] = np.nan
-                elif not self.touching[c]:
-                    self.anchor[c] = np.nan              # a new spell of contact
-                if touching and np.isnan(self.anchor[c, 0]) and m[k] == STICK:
-                    self.anchor[c] = tpos[k, c]
-                if touching and not np.isnan(self.anchor[c, 0]):
-                    d = tpos[k, c] - self.anchor[c]
-                    out[k, c] = np.hypot(d[0], d[1])
-                self.touching[c] = touching
-            self.touching[c] = m[-1] != OPEN if n else self.touching[c]
+        out = np.empty(mode.shape)
+        track_landing(np.ascontiguousarray(mode, dtype=np.int64), np.ascontiguousarray(tpos, dtype=float),
+                      self.anchor, out, max(0, self.start_row - self.row))
+        self.row += mode.shape[0]
         return out
+
+
+def settle_row(info) -> int:
+    """Row at which a trial has settled (thrust on, waves beginning): landing positions are taken from it."""
+    return int(round(float(info.provenance.get("waves_from", 0.0)) / info.dt))
 
 
 def world_pose(x: np.ndarray, start_pose) -> tuple[np.ndarray, np.ndarray]:

@@ -28,8 +28,8 @@ from mcap.opcode import Opcode
 
 from boatland import __version__
 from boatland.errors import BoatlandInputError
-from boatland.contact.fender import OPEN, STICK
-from boatland.record.columns import Columns, LandingTracker, bow_elevation, world_pose
+from boatland.record.columns import Columns, LandingTracker, bow_elevation, settle_row, world_pose
+from boatland.trial.events import track_landing
 from boatland.record.scene import scene_metadata
 from boatland.record.schemas import LOG_LEVEL, TOPICS, file_descriptor_set, message_class
 
@@ -152,30 +152,6 @@ def _put(out, i, pos, value, scratch):
 
 
 @numba.njit(cache=True)
-def _track_landing(mode, tp, anchor, touching, slip):  # pragma: no cover - compiled
-    """:class:`~boatland.record.columns.LandingTracker` compiled: fills ``slip`` (n, Nc), updates the
-    carried ``anchor`` (Nc, 2) and ``touching`` (Nc,) in place; returns the largest slip (−1: none)."""
-    n, nc = mode.shape
-    worst = -1.0
-    for c in range(nc):
-        for k in range(n):
-            now = mode[k, c] != OPEN
-            if not now or not touching[c]:
-                anchor[c, 0] = np.nan
-                anchor[c, 1] = np.nan
-            if now and np.isnan(anchor[c, 0]) and mode[k, c] == STICK:
-                anchor[c, 0] = tp[k, c, 0]
-                anchor[c, 1] = tp[k, c, 1]
-            if now and not np.isnan(anchor[c, 0]):
-                slip[k, c] = np.hypot(tp[k, c, 0] - anchor[c, 0], tp[k, c, 1] - anchor[c, 1])
-                worst = max(worst, slip[k, c])
-            else:
-                slip[k, c] = np.nan
-            touching[c] = now
-    return worst
-
-
-@numba.njit(cache=True)
 def _encode_steps(out, template, dpos, epos, seqpos, timepos, tpos, seq0, t_ns, t, x, v, F, thrust, eta, fn, ft,
                   needed, available, slip, tp, mode, x0, y0, psi):  # pragma: no cover - compiled
     """Fill ``out`` (n, size) with the message records of n steps: :meth:`_Layout.fill` of
@@ -284,7 +260,6 @@ class McapLog:
         self._t_range = [None, None]
         nc = np.asarray(info.contacts[0]).reshape(-1, 3).shape[0]
         self._anchor = np.full((nc, 2), np.nan)      # landing positions carried across blocks
-        self._touching = np.zeros(nc, np.bool_)
         self._eta = None                 # computed at the first block, while the kernel already runs
         self._incidents = IncidentWatch(info.scenario)
         self._log_cls = message_class("foxglove.Log")
@@ -311,7 +286,7 @@ class McapLog:
         if self._eta is None:
             self._eta = bow_elevation(self.info)
         slip = np.empty(block.mode.shape)
-        worst = _track_landing(block.mode, block.tpos, self._anchor, self._touching, slip)
+        worst = track_landing(block.mode, block.tpos, self._anchor, slip, max(0, settle_row(self.info) - block.k0))
         t_ns = np.rint(np.asarray(block.t) * NS).astype(np.int64)
         rows = self._layout.encode(self._counts["/tf"], t_ns, block, slip, self._eta[block.k0:block.k1],
                                    self.info.start_pose)

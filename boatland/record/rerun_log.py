@@ -18,7 +18,7 @@ from urllib.parse import urlparse
 import numpy as np
 
 from boatland.errors import BoatlandInputError
-from boatland.record.columns import Columns, LandingTracker, bow_elevation
+from boatland.record.columns import Columns, LandingTracker, bow_elevation, settle_row
 from boatland.record.mcap_log import IncidentWatch, columns_from_block, end_event, step_events
 from boatland.record.scene import PATCH_DT, Scene, scene_from_trial
 
@@ -27,7 +27,8 @@ __all__ = ["RerunView", "RerunLog", "parse_target", "open_stream", "check_target
 APPLICATION_ID = "boatland"
 TIMELINE = "sim_time"
 DEFAULT_URL = "rerun+http://127.0.0.1:9876/proxy"
-MODE_COLORS = np.array([[150, 150, 150, 255], [40, 190, 60, 255], [230, 40, 40, 255]], np.uint8)  # open stick slip
+MODE_COLORS = np.array([[150, 150, 150, 255], [40, 190, 60, 255], [230, 40, 40, 255],
+                        [120, 0, 160, 255]], np.uint8)  # open, stick, slip, off the landing
 FLUSH_EVERY = 30.0     # [s] of simulated time buffered between sends of the live stream
 
 
@@ -250,7 +251,7 @@ class RerunLog:
                                                       quiet=self.quiet)
         self.view = RerunView(self.rec, scene_from_trial(info.scenario, info.db, info.start_pose, info.contacts), nc)
         self.view.static()
-        self._tracker, self._incidents, self._eta = LandingTracker(nc), IncidentWatch(info.scenario), None
+        self._tracker, self._incidents, self._eta = LandingTracker(nc, settle_row(info)), IncidentWatch(info.scenario), None
         self._buf, self._events = [], []
 
     def steps(self, block) -> None:

@@ -1,32 +1,41 @@
 """Events and incidents of a landing trial, extracted from the integrator's per-step contact records.
 
-An *event* is a change of a contact's state between two step starts (modes 0 open, 1 stick, 2 slip):
-contact made / lost, stick → slip (a slip event, seed 002 §3.3: the fender starts to slide),
-slip → stick. A *slip episode* runs from a stick → slip event to the next re-stick or loss of
-contact; its slide is the largest displacement of the fender point, in the contact plane, from where
-it was stuck (vertical and horizontal along the plane). A contact that touches and slides before it
-first catches is still landing: that slide is not a slip episode.
+An *event* is a change of a contact's state between two step starts (modes 0 open, 1 stick, 2 slip,
+3 off the landing): contact made / lost, stick → slip (a slip event, Grøtting 2015 §3.3: the fender
+starts to slide), slip → stick, slid off the landing. A *slip episode* runs from a stick → slip
+event to the next re-stick or loss of contact; its slide is the largest displacement of the fender,
+on the landing, from where it was stuck (vertical and horizontal). A contact that touches and slides
+before it first catches is still landing: that slide is not a slip episode.
 
-The *slip distance* of an incident is seed 002's (§4.2, SIMO runs): "the fender point of the vessel
-moves more than 10 cm away from its original position" — measured from where the contact first
-stuck after it was made (its landing position), so a run of short slides that each stay below the
-threshold but creep away from the landing position is an incident too (:func:`landing_offset`).
-Incidents: slip distance above a threshold, roll above a limit, loss of contact — each reported with
+The *slip distance* of an incident is Grøtting's (2015, §4.2, SIMO runs): "the fender point of the
+vessel moves more than 10 cm away from its original position" — measured from where the contact
+first stuck in the trial (its landing position), so a run of short slides that each stay below the
+threshold but creep away from the landing position is an incident too, and so is a fender that
+bounces off and lands again elsewhere (:func:`landing_offset`). Incidents: slip distance above a
+threshold, roll above a limit, loss of contact, the fender slid off the landing — each reported with
 the time it first happens.
+
+Grøtting, H. (2015), *Small Water Plane Area Solutions for Access of Offshore Wind Turbines*, MSc
+thesis, NTNU.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+import numba
 import numpy as np
 
-from boatland.contact.fender import OPEN, SLIP, STICK
+from boatland.contact.fender import OFF, OPEN, SLIP, STICK
 
-__all__ = ["Event", "SlipEpisode", "extract_events", "slip_episodes", "landing_offset", "first_exceedance"]
+__all__ = ["Event", "SlipEpisode", "SLID_OFF", "extract_events", "slip_episodes", "landing_offset", "track_landing",
+           "first_exceedance"]
 
+SLID_OFF = "slid off the landing"
 KIND = {(OPEN, STICK): "contact made", (OPEN, SLIP): "contact made", (STICK, OPEN): "contact lost",
-        (SLIP, OPEN): "contact lost", (STICK, SLIP): "stick→slip", (SLIP, STICK): "slip→stick"}
+        (SLIP, OPEN): "contact lost", (STICK, SLIP): "stick→slip", (SLIP, STICK): "slip→stick",
+        (STICK, OFF): SLID_OFF, (SLIP, OFF): SLID_OFF, (OPEN, OFF): SLID_OFF,
+        (OFF, OPEN): "contact lost", (OFF, STICK): "contact made", (OFF, SLIP): "contact made"}
 
 
 @dataclass(frozen=True)
@@ -82,48 +91,76 @@ def extract_events(t, mode, needed, available) -> list[Event]:
 
 
 def slip_episodes(t, mode, tpos) -> list[SlipEpisode]:
-    """Slip episodes (stick → slip until re-stick or loss of contact) of every contact; ``tpos``
-    (n, Nc, 2) the fender points' (vertical, horizontal) position in the contact plane. An episode
-    still running at the end is closed there."""
+    """Slip episodes (stick → slip until re-stick, loss of contact or sliding off) of every contact;
+    ``tpos`` (n, Nc, 2) the fenders' (vertical, horizontal) positions on the landing. An episode still
+    running at the end is closed there. One pass over the record per contact (the ends of all slip
+    runs are found at once), so the cost is linear in the record whatever the number of episodes."""
     episodes = []
     mode = np.asarray(mode)
+    tpos = np.asarray(tpos)
     n = mode.shape[0]
+    ended_by = {STICK: "re-stick", OPEN: "contact lost", OFF: "slid off the landing"}
     for c in range(mode.shape[1]):
-        starts = np.nonzero((mode[1:, c] == SLIP) & (mode[:-1, c] == STICK))[0] + 1
-        for k0 in starts:
-            origin = tpos[k0 - 1, c]
-            after = np.nonzero(mode[k0:, c] != SLIP)[0]
-            k1 = k0 + int(after[0]) if after.size else n - 1
-            ended = "end of run" if not after.size else ("re-stick" if mode[k1, c] == STICK else "contact lost")
-            d = tpos[k0:k1 + 1, c] - origin
+        m = mode[:, c]
+        sliding = m == SLIP
+        starts = np.flatnonzero(sliding[1:] & (m[:-1] == STICK)) + 1
+        if not starts.size:
+            continue
+        ends = np.flatnonzero(sliding[:-1] & ~sliding[1:]) + 1        # first row after each slip run
+        j_end = np.searchsorted(ends, starts)
+        for k0, j in zip(starts, j_end):
+            if j < ends.size:
+                k1, ended = int(ends[j]), ended_by[int(m[ends[j]])]
+            else:
+                k1, ended = n - 1, "end of run"
+            d = tpos[k0:k1 + 1, c] - tpos[k0 - 1, c]
             dist = np.hypot(d[:, 0], d[:, 1])
-            j = int(np.argmax(dist))
-            episodes.append(SlipEpisode(c, float(t[k0]), float(t[k1]), float(dist[j]), float(d[j, 0]),
-                                        float(d[j, 1]), ended))
+            i = int(np.argmax(dist))
+            episodes.append(SlipEpisode(c, float(t[k0]), float(t[k1]), float(dist[i]), float(d[i, 0]),
+                                        float(d[i, 1]), ended))
     episodes.sort(key=lambda e: (e.t_start, e.contact))
     return episodes
 
 
-def landing_offset(mode, tpos) -> np.ndarray:
+@numba.njit(cache=True)
+def track_landing(mode, tpos, anchor, out, k_start):  # pragma: no cover - compiled
+    """Landing offsets of a block of rows, carrying the landing positions across blocks: fills ``out``
+    (n, Nc) and updates ``anchor`` (Nc, 2) in place (NaN until the contact first sticks at or after row
+    ``k_start`` of the block; earlier rows are settling, NaN); returns the largest offset in the block
+    (−1: none). See :func:`landing_offset`."""
+    n, nc = mode.shape
+    worst = -1.0
+    for c in range(nc):
+        for k in range(n):
+            m = mode[k, c]
+            if k < k_start:
+                out[k, c] = np.nan
+                continue
+            if np.isnan(anchor[c, 0]) and m == STICK:
+                anchor[c, 0] = tpos[k, c, 0]
+                anchor[c, 1] = tpos[k, c, 1]
+            if (m == STICK or m == SLIP) and not np.isnan(anchor[c, 0]):
+                out[k, c] = np.hypot(tpos[k, c, 0] - anchor[c, 0], tpos[k, c, 1] - anchor[c, 1])
+                worst = max(worst, out[k, c])
+            else:
+                out[k, c] = np.nan
+    return worst
+
+
+def landing_offset(mode, tpos, k_start: int = 0) -> np.ndarray:
     """Distance [m] of each fender point from its landing position, per step: (n, Nc).
 
-    The landing position of a contact is where it first stuck after it was made; it holds until the
-    contact is lost (a new landing then has a new one). NaN while the contact is open or has not yet
-    caught. This is seed 002's incident slip distance (fender point "more than 10 cm away from its
+    The landing position of a contact is where it first stuck at or after row ``k_start`` — the end of
+    the settling, when the thrust is on and the waves begin (:attr:`Result.settled_at`); it holds for
+    the rest of the trial — through bounces and short losses of contact, so a fender that lands again
+    elsewhere has slid by that much. NaN while the contact is open, has not yet caught, or settles.
+    This is Grøtting's (2015) incident slip distance (fender point "more than 10 cm away from its
     original position").
     """
-    mode = np.asarray(mode)
-    tpos = np.asarray(tpos)
-    out = np.full(mode.shape, np.nan)
-    nc = mode.shape[1]
-    for c in range(nc):
-        edges = np.flatnonzero(np.diff(np.r_[0, (mode[:, c] != OPEN).astype(np.int8), 0]))
-        for s0, s1 in zip(edges[::2], edges[1::2]):      # contact spells: steps [s0, s1) in touch
-            stuck = np.flatnonzero(mode[s0:s1, c] == STICK)
-            if stuck.size:
-                k0 = s0 + stuck[0]                        # first stick of the spell = the landing position
-                d = tpos[k0:s1, c] - tpos[k0, c]
-                out[k0:s1, c] = np.hypot(d[:, 0], d[:, 1])
+    mode = np.ascontiguousarray(mode, dtype=np.int64)
+    out = np.empty(mode.shape)
+    track_landing(mode, np.ascontiguousarray(tpos, dtype=float), np.full((mode.shape[1], 2), np.nan), out,
+                  int(k_start))
     return out
 
 

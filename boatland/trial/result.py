@@ -12,7 +12,7 @@ from boatland import __version__
 from boatland.atomic import atomic_path
 from boatland.conventions import DOF_NAMES, DOF_UNITS
 from boatland.model.scenario_parts import Incidents
-from boatland.trial.events import Event, SlipEpisode, first_exceedance, landing_offset
+from boatland.trial.events import SLID_OFF, Event, SlipEpisode, first_exceedance, landing_offset
 
 __all__ = ["Result", "TrialSeries", "SERIES"]
 
@@ -33,11 +33,13 @@ class TrialSeries:
     thrust : (n,)
         Push along the vessel's x axis [N].
     mode : (n, Nc) int
-        0 open, 1 stick, 2 slip (at each step start).
+        0 open, 1 stick, 2 slip, 3 off the landing (at each step start).
     fn : (n, Nc)
-        Normal force [N]; ``ft`` (n, Nc, 2) friction (vertical, horizontal) [N]; ``needed`` the stick
-        force that would hold the contact, ``available`` μ(|u|) f_n [N]; ``tpos`` (n, Nc, 2) the
-        fender point in the contact plane [m].
+        Normal force [N]; ``ft`` (n, Nc, 2) friction or shear force on the vessel along the tube
+        (vertical, horizontal) [N]; ``needed`` the force that would hold the contact stuck,
+        ``available`` the friction available, μ_s f_n (stuck) or μ(|u|) f_n (sliding) [N]; ``tpos``
+        (n, Nc, 2) the fender's position on the landing (contact height, fender centre along the
+        landing) [m].
     """
 
     t: np.ndarray
@@ -63,10 +65,16 @@ class Result(TrialSeries):
 
     Attributes
     ----------
+    slide : (n, Nc, 2) or None
+        Sliding of the fender over the tube (vertical, horizontal) during the step that ended at each row
+        [m]: the rubber's anchor (compliant fender) or the contact point (rigid stick).
+    work : (n, Nc) or None
+        Friction work of that step [J] (never positive).
     events, episodes : list
         :class:`~boatland.trial.events.Event` and :class:`~boatland.trial.events.SlipEpisode`.
     status, message : int, str
-        0 = completed; otherwise why the integration stopped (NaN, runaway) — the arrays then end there.
+        0 = completed; 3 = the fender slid off the landing (an outcome: the trial ends there);
+        otherwise why the integration stopped (NaN, runaway) — the arrays then end there.
     provenance : dict
         boatland version, scenario name and hash, seed, dt, radiation method.
     incidents : Incidents
@@ -74,6 +82,8 @@ class Result(TrialSeries):
         contact is always reported.
     """
 
+    slide: np.ndarray | None = None
+    work: np.ndarray | None = None
     events: list[Event] = field(default_factory=list)
     episodes: list[SlipEpisode] = field(default_factory=list)
     status: int = 0
@@ -85,13 +95,33 @@ class Result(TrialSeries):
     def completed(self) -> bool:
         return self.status == 0
 
+    @property
+    def settled_at(self) -> float:
+        """Time [s] the landing has settled: the thrust is fully on and the waves begin
+        (:func:`boatland.trial.simulate.wave_start`). Before it the fender is still being pushed on —
+        slides then are settling, not slips: events before it are not counted as slip events, and the
+        landing position is taken from it."""
+        return float(self.provenance.get("waves_from", 0.0))
+
+    @property
+    def exposure_from(self) -> float:
+        """Time [s] the waves have reached full height (the settling plus the waves' start-up ramp): the
+        exposure of a campaign's access is counted from here."""
+        return self.settled_at + float(self.provenance.get("wave_ramp", 0.0))
+
+    def _settle_row(self) -> int:
+        return int(np.searchsorted(self.t, self.settled_at - 1e-9))
+
     def slip_events(self) -> list[Event]:
-        return [e for e in self.events if e.kind == "stick→slip"]
+        """The stick → slip events after the settling (:attr:`settled_at`)."""
+        t0 = self.settled_at - 1e-9
+        return [e for e in self.events if e.kind == "stick→slip" and e.t >= t0]
 
     def landing_offset(self) -> np.ndarray:
-        """(n, Nc) distance [m] of each fender point from where it landed (NaN while open or not yet
-        caught): the slip distance of seed 002's incident, see :func:`boatland.trial.events.landing_offset`."""
-        return landing_offset(self.mode, self.tpos)
+        """(n, Nc) distance [m] of each fender point from where it landed after the settling (NaN while
+        open, not yet caught, or settling): Grøtting's (2015) incident slip distance, see
+        :func:`boatland.trial.events.landing_offset`."""
+        return landing_offset(self.mode, self.tpos, self._settle_row())
 
     def _worst_offset(self) -> np.ndarray | None:
         """Largest landing offset over the contacts per step (0 where none has landed); None without contacts."""
@@ -111,8 +141,10 @@ class Result(TrialSeries):
         for limit in roll_limits:
             out[f"roll > {limit:g}°"] = first_exceedance(self.t, self.x[:, 3], np.radians(limit))
         if self.mode.shape[1]:
-            lost = [e.t for e in self.events if e.kind == "contact lost"]
+            lost = [e.t for e in self.events if e.kind in ("contact lost", SLID_OFF) and e.t >= self.settled_at - 1e-9]
             out["contact loss"] = min(lost) if lost else None
+            off = [e.t for e in self.events if e.kind == SLID_OFF]
+            out[SLID_OFF] = min(off) if off else None
         return out
 
     def summary(self) -> dict:
@@ -127,7 +159,8 @@ class Result(TrialSeries):
             "slip_events": len(slips),
             "time_to_first_slip": slips[0].t if slips else None,
             "max_slip_distance": float(worst.max()) if worst is not None and worst.size else 0.0,
-            "max_single_slide": max((e.distance for e in self.episodes), default=0.0),
+            "max_single_slide": max((e.distance for e in self.episodes if e.t_start >= self.settled_at - 1e-9),
+                                    default=0.0),
             "max_normal_force": None if not touching.any() else float(np.nanmax(fn)),
             "min_normal_force_in_contact": None if not touching.any() else float(np.nanmin(fn)),
             "contact_fraction": float(touching.all(axis=1).mean()) if self.mode.shape[1] else 0.0,
@@ -169,11 +202,12 @@ class Result(TrialSeries):
             with h5py.File(tmp, "w") as f:
                 f.attrs["boatland_version"] = __version__
                 f.attrs["summary"] = json.dumps(self.summary())
-                for name in SERIES:
-                    f.create_dataset(name, data=getattr(self, name), compression="gzip", shuffle=True)
+                for name in SERIES + ("slide", "work"):
+                    if getattr(self, name) is not None:
+                        f.create_dataset(name, data=getattr(self, name), compression="gzip", shuffle=True)
                 f["x"].attrs["columns"] = ",".join(DOF_NAMES)
                 ev = np.array([(e.t, e.contact, e.kind.encode(), e.needed, e.available) for e in self.events],
-                              dtype=[("t", "f8"), ("contact", "i4"), ("kind", "S16"), ("needed", "f8"),
+                              dtype=[("t", "f8"), ("contact", "i4"), ("kind", "S24"), ("needed", "f8"),
                                      ("available", "f8")])
                 f["events"] = ev
         return path

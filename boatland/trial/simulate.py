@@ -12,23 +12,28 @@ from __future__ import annotations
 
 import threading
 import time
+import warnings
 from collections.abc import Callable, Sequence
 from dataclasses import replace
 
 import numpy as np
 
 from boatland import __version__
+from boatland.contact.fender import Contacts, contact_set, no_contacts
 from boatland.errors import BoatlandInputError
+from boatland.integrate.cummins import OUTCOME_STATUSES
 from boatland.irf.impulse import IRFSettings
+from boatland.model.landed import check_memory
 from boatland.model.motion import compile_motion
 from boatland.model.radiation import RadiationMemory, default_dt, radiation_memory
-from boatland.model.scenario import Scenario
+from boatland.model.scenario import Scenario, ScenarioWarning
 from boatland.model.hydrodb import HydroDB
 from boatland.trial.events import extract_events, slip_episodes
-from boatland.trial.result import Result
+from boatland.trial.result import SERIES, Result
 from boatland.trial.sink import StepBlock, TrialInfo, TrialSink
 
-__all__ = ["simulate", "prepare_memory", "contact_arrays", "thrust_series", "wave_ramp", "wave_start", "BlowUpError"]
+__all__ = ["simulate", "prepare_memory", "check_radiation", "contact_arrays", "thrust_series", "wave_ramp", "wave_start",
+           "exposure_start", "BlowUpError"]
 
 #: Runaway limits: no CTV landing survives these (linear hydrodynamics is meaningless beyond them).
 LIMIT_TRANS, LIMIT_ROT = 50.0, np.radians(60.0)
@@ -55,6 +60,18 @@ def prepare_memory(scenario: Scenario, db: HydroDB) -> RadiationMemory:
     return radiation_memory(db, settings, fit=rad.method == "state_space")
 
 
+def check_radiation(scenario: Scenario, db: HydroDB, memory: RadiationMemory, dt: float) -> None:
+    """Refuse a radiation memory that would make a landed natural mode grow
+    (:func:`boatland.model.landed.check_memory`); warn where its damping is negative but the mode stays
+    damped. Done once per memory (a campaign checks each case before its trials)."""
+    check = check_memory(scenario, db, memory, dt)
+    if check.problems:
+        key, msg = check.problems[0]
+        raise BoatlandInputError(f"{scenario.source}: {key}: {msg}")
+    for key, msg in check.warnings:
+        warnings.warn(f"{scenario.source}: {key}: {msg}", ScenarioWarning, stacklevel=3)
+
+
 def thrust_series(scenario: Scenario, dt: float, n_steps: int) -> np.ndarray:
     """Push [N] at the half steps, ramped in with a half-cosine over ``thrust.ramp``."""
     t = np.arange(2 * n_steps + 1) * dt / 2
@@ -71,6 +88,12 @@ def wave_start(scenario: Scenario) -> float:
     return scenario.thrust.ramp if (scenario.thrust is not None and scenario.fender is not None) else 0.0
 
 
+def exposure_start(scenario: Scenario) -> float:
+    """Time [s] the waves reach full height: :func:`wave_start` plus the waves' start-up ramp — where a
+    campaign's exposure (the access) begins."""
+    return wave_start(scenario) + (scenario.simulation.start_ramp if scenario.sea is not None else 0.0)
+
+
 def wave_ramp(scenario: Scenario, dt: float, n_steps: int) -> np.ndarray:
     """Factor on the wave excitation at the half steps: 0 until :func:`wave_start`, then a half-cosine
     over ``simulation.start_ramp``, then 1."""
@@ -81,27 +104,28 @@ def wave_ramp(scenario: Scenario, dt: float, n_steps: int) -> np.ndarray:
     return np.where(t <= 0, 0.0, np.where(t < T, 0.5 * (1 - np.cos(np.pi * np.clip(t, 0, T) / T)), 1.0))
 
 
-def contact_arrays(scenario: Scenario, db: HydroDB):
-    """The kernel's contact tuple ``(P, S, N, TH, CF, DF, MU, sideways)`` in the local frame (origin at
-    the reference point's start position, axes along the vessel at rest)."""
-    e3 = np.zeros((0, 3))
+def contact_arrays(scenario: Scenario, db: HydroDB) -> Contacts:
+    """The kernel's :class:`~boatland.contact.fender.Contacts` in the local frame (origin at the reference
+    point's start position, axes along the vessel at rest): fender lines along the body y axis, the
+    landing's tubes, the normal and shear laws (the shear damping from its ratio of critical, with
+    the vessel of ``db``: :func:`boatland.model.scenario_checks.contact_period`)."""
     if scenario.fender is None or scenario.landing is None:
-        return (e3, e3, e3, e3, np.zeros(0), np.zeros(0), np.zeros((0, 5)), True)
+        return no_contacts()
+    from boatland.model.scenario_checks import contact_period
+
     x0, y0, psi = scenario.start_pose()
     c, s = np.cos(psi), np.sin(psi)
     to_local = np.array([[c, s], [-s, c]])  # global → local rotation (by −ψ)
-    fender = scenario.fender
-    P = fender.points_array
-    nc = P.shape[0]
-    n_loc = scenario.landing.normals @ to_local.T
-    s_loc = (scenario.landing.plane_points - [x0, y0]) @ to_local.T
-    N = np.column_stack([n_loc, np.zeros(nc)])
-    S = np.column_stack([s_loc, np.zeros(nc)])
-    TH = np.cross([0.0, 0.0, 1.0], N)
-    CF = np.full(nc, fender.stiffness)
-    DF = np.full(nc, fender.damping)
-    MU = np.tile([fender.mu_s, fender.mu_k, fender.k_v, fender.v_ref, fender.delta], (nc, 1))
-    return (np.ascontiguousarray(P, dtype=float), S, N, TH, CF, DF, MU, bool(fender.sideways))
+    fender, struts = scenario.fender, scenario.landing.struts
+    axes = (np.array([st.position for st in struts], dtype=float) - [x0, y0]) @ to_local.T
+    c_t = contact_period(scenario, db).shear_damping if not fender.rigid else 0.0
+    return contact_set(fender.points_array, axes, [st.diameter / 2 for st in struts],
+                       scenario.landing.normals @ to_local.T, direction=(0.0, 1.0, 0.0),
+                       half_width=fender.width / 2, bottom=[st.bottom for st in struts],
+                       top=[st.top for st in struts], stiffness=fender.stiffness, damping=fender.damping,
+                       shear_stiffness=fender.shear_stiffness, shear_damping=c_t, mu_s=fender.mu_s,
+                       mu_k=fender.mu_k, k_v=fender.k_v, v_ref=fender.v_ref, delta=fender.delta,
+                       sideways=fender.sideways)
 
 
 def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None = None,
@@ -121,7 +145,9 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
     db : HydroDB
         The vessel's database (with a mass matrix).
     memory : RadiationMemory, optional
-        Reuse IRFs / state-space fit across trials of a campaign (must match the scenario's settings).
+        Reuse IRFs / state-space fit across trials of a campaign (must match the scenario's settings;
+        the caller checks it once with :func:`check_radiation`). Without it the memory is made and
+        checked here.
     progress : callable, optional
         ``progress(steps_done, n_steps)``, called about ten times a second while the kernel runs (it
         runs in a worker thread with the GIL released) — e.g. to drive a progress bar.
@@ -142,7 +168,9 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
     wall0 = time.perf_counter()
     dt = scenario.time_step(db)
     n = scenario.n_steps(db)
-    memory = memory or prepare_memory(scenario, db)
+    if memory is None:
+        memory = prepare_memory(scenario, db)
+        check_radiation(scenario, db, memory, dt)
     try:
         arrays = compile_motion(db, memory, dt, method=scenario.radiation.method,
                                 memory_length=scenario.radiation.memory)
@@ -166,7 +194,7 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
         "boatland": __version__, "scenario": scenario.name, "scenario_sha256": scenario.digest(),
         "database": db.name, "seed": scenario.simulation.seed, "dt": dt, "steps": n,
         "radiation": scenario.radiation.method, "memory": scenario.radiation.memory,
-        "waves_from": wave_start(scenario),
+        "waves_from": wave_start(scenario), "wave_ramp": scenario.simulation.start_ramp if waves is not None else 0.0,
     }
     if progress is None and not sinks:
         out = arrays.run(dt, n, **kwargs)
@@ -181,12 +209,13 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
     provenance["wall_time"] = time.perf_counter() - wall0
     result = Result(t=t, x=out["x"], v=out["v"], F_exc=F[0:2 * k:2], thrust=thrust[0:2 * k:2],
                     mode=out["mode"], fn=out["fn"], ft=out["ft"], needed=out["needed"],
-                    available=out["available"], tpos=out["tpos"], events=events, episodes=episodes,
+                    available=out["available"], tpos=out["tpos"], slide=out["slide"], work=out["work"],
+                    events=events, episodes=episodes,
                     status=out["status"], message=out["message"], provenance=provenance,
                     incidents=scenario.incidents)
     for sink in sinks:
         sink.finish(result)
-    if out["status"] != 0:
+    if out["status"] not in OUTCOME_STATUSES:
         raise BlowUpError(result, _likely_cause(scenario, db, dt, result))
     return result
 
@@ -234,13 +263,17 @@ def _run_watched(arrays, dt: float, n: int, kwargs: dict, progress, sinks, info:
     return out
 
 
+#: The kernel outputs a :class:`StepBlock` carries (the per-step slide and friction work stay in the Result).
+_BLOCK_SERIES = frozenset(SERIES) - {"t", "F_exc", "thrust"}
+
+
 def _send(sinks, live: dict, F, thrust, dt: float, k0: int, k1: int) -> None:
     """One block of final rows [k0, k1) with its events to every sink."""
     lo = max(k0 - 1, 0)
     t = np.arange(lo, k1) * dt
     events = [replace(e, step=e.step + lo) for e in extract_events(t, live["mode"][lo:k1], live["needed"][lo:k1],
                                                                      live["available"][lo:k1])]
-    views = {k: a[k0:k1] for k, a in live.items()}
+    views = {k: a[k0:k1] for k, a in live.items() if k in _BLOCK_SERIES}
     for a in views.values():
         a.flags.writeable = False
     blk = StepBlock(k0=k0, k1=k1, t=t[k0 - lo:], F_exc=F[2 * k0:2 * k1:2], thrust=thrust[2 * k0:2 * k1:2],
@@ -254,10 +287,10 @@ def _likely_cause(scenario, db, dt, result) -> str:
     if scenario.fender is not None:
         from boatland.model.scenario_checks import contact_period
 
-        Tc = contact_period(scenario, db).period
-        if dt > Tc / 10:
-            return (f"dt = {dt:g} s is large for the fender contact period {Tc:.3g} s (use dt ≤ {Tc / 20:.3g} s "
-                    "or a softer fender)")
+        cp = contact_period(scenario, db)
+        if dt > 2 * cp.dt_limit:
+            return (f"dt = {dt:g} s is large for the fender's contact modes (normal {cp.period:.3g} s, stuck shear "
+                    f"{cp.shear_period:.3g} s): use dt ≤ {cp.dt_limit:.3g} s or a softer fender")
     if abs(x[3]) > LIMIT_ROT or abs(x[4]) > LIMIT_ROT:
         return "capsizing rotation: check the restoring matrix (C44, C55) and the centre of gravity"
     if np.any(np.diag(db.C)[2:5] <= 0):

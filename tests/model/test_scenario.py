@@ -280,7 +280,7 @@ def test_defaults_are_filled_once():
     s = make(remove=("simulation.dt", "thrust", "sea"))
     assert s.simulation.dt is None and s.time_step() == 0.05
     assert s.simulation.start_ramp == 0.0 and s.thrust is None and s.sea is None
-    assert s.radiation.method == "convolution" and s.radiation.memory == MEMORY_DEFAULT
+    assert s.radiation.method == "state_space" and s.radiation.memory == MEMORY_DEFAULT
     assert s.incidents.slip_distance == (0.1,) and s.incidents.roll_limit_deg == (10.0,)
     assert (s.fender.k_v, s.fender.v_ref, s.fender.delta, s.fender.sideways) == (0.0, 0.2, 1.5, True)
     assert np.array_equal(s.initial.displacement, np.zeros(6))

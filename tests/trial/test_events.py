@@ -43,9 +43,11 @@ def test_first_exceedance():
     assert first_exceedance(t, np.zeros(5), 0.2) is None
 
 
-def test_landing_offset_accumulates_short_slides_and_resets_on_a_new_landing():
-    """Seed 002's incident: the fender point more than a threshold from where it landed. Three slides of
-    4 cm each, with re-sticks between, are three episodes below 5 cm but 12 cm from the landing."""
+def test_landing_offset_accumulates_short_slides_and_survives_a_bounce():
+    """Grøtting's (2015) incident: the fender point more than a threshold from where it landed. Three
+    slides of 4 cm each, with re-sticks between, are three episodes below 5 cm but 12 cm from the
+    landing. A bounce (contact lost, made again 3.9 m higher) does not start a new landing position:
+    the fender has moved 3.9 m from where it landed."""
     mode = np.array([0, 2, 2, 1, 2, 1, 2, 1, 2, 1, 0, 2, 1, 1])[:, None]
     z = np.array([0, .3, .2, .1, .06, .06, .02, .02, -.02, -.02, 0, 5.0, 4.0, 4.0])
     tpos = np.zeros((14, 1, 2)); tpos[:, 0, 0] = z
@@ -54,7 +56,9 @@ def test_landing_offset_accumulates_short_slides_and_resets_on_a_new_landing():
     assert [e.t_start for e in eps] == [4.0, 6.0, 8.0]                # the slide before it caught is landing
     assert max(e.distance for e in eps) == pytest.approx(0.04)
     off = landing_offset(mode, tpos)[:, 0]
-    assert np.isnan(off[:3]).all() and np.isnan(off[10:12]).all()    # open, or touching but not yet caught
+    assert np.isnan(off[:3]).all() and np.isnan(off[10])              # open, or touching but not yet caught
     assert off[9] == pytest.approx(0.12)                              # 0.10 → −0.02
-    assert off[12:] == pytest.approx([0.0, 0.0])                      # a new landing at 4.0 m: new origin
+    assert off[11:] == pytest.approx([4.9, 3.9, 3.9])                 # after the bounce: from the first landing
+    settled = landing_offset(mode, tpos, k_start=5)[:, 0]            # settling until row 5: lands at 0.06
+    assert np.isnan(settled[:5]).all() and settled[9] == pytest.approx(0.08)
     assert first_exceedance(t, np.nan_to_num(off), 0.05) == 6.0
