@@ -1,6 +1,7 @@
 """Hydrodynamic database I/O timings: each reader on the public reference data, and BEMIO write/read.
 
-Run: ``python bench/bench_hydro.py`` (from the repo root, with ../shared/refdata present).
+Run: ``python bench/bench_hydro.py`` (from the repo root; the files are the test suite's tests/data/refdata).
+Origin and licences of the files: tests/data/refdata/README.md.
 Figures go to bench/README.md by hand, with the machine and date.
 """
 
@@ -14,7 +15,7 @@ from pathlib import Path
 
 from boatland.hydro import read_hydro, write_bemio
 
-REF = Path(__file__).resolve().parents[2] / "shared" / "refdata"
+REF = Path(__file__).resolve().parents[1] / "tests" / "data" / "refdata"
 CASES = {
     "wamit sphere (420 ω)": REF / "wamit_sphere" / "sphere.1",
     "nemoh sphere (420 ω)": REF / "nemoh_sphere",

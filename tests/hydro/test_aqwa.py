@@ -1,4 +1,4 @@
-"""AQWA reader on WEC-Sim's floating cylinder (shared/refdata/aqwa_cylinder, notes/refdata.md)."""
+"""AQWA reader on WEC-Sim's floating cylinder (tests/data/refdata/aqwa_cylinder, Apache-2.0; see its README.md)."""
 
 from __future__ import annotations
 

@@ -1,5 +1,5 @@
-"""Capytaine NetCDF reader: WEC-Sim's Capytaine 2.3 hemisphere (shared/refdata/capytaine_sphere,
-notes/refdata.md) and small datasets written here by Capytaine 3.0."""
+"""Capytaine NetCDF reader: WEC-Sim's Capytaine 2.3 hemisphere (tests/data/refdata/capytaine_sphere,
+Apache-2.0; see its README.md) and small datasets written here by Capytaine 3.0."""
 
 from __future__ import annotations
 

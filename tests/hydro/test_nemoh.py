@@ -1,4 +1,5 @@
-"""NEMOH reader on WEC-Sim's NEMOH v3.0.2 hemisphere (shared/refdata/nemoh_sphere, notes/refdata.md)."""
+"""NEMOH reader on WEC-Sim's NEMOH v3.0.2 hemisphere (tests/data/refdata/nemoh_sphere, Apache-2.0;
+see its README.md)."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""WAMIT reader on WEC-Sim's hemisphere (shared/refdata/wamit_sphere, notes/refdata.md)."""
+"""WAMIT reader on WEC-Sim's hemisphere (tests/data/refdata/wamit_sphere, Apache-2.0; see its README.md)."""
 
 from __future__ import annotations
 
@@ -88,7 +88,7 @@ def test_known_phases(sphere):
 
 
 def test_negative_damping_above_8_2_rad_s_is_kept(sphere):
-    """Reference WAMIT data really has B33 < 0 above ~8.2 rad/s (notes/refdata.md): the reader keeps it."""
+    """Reference WAMIT data really has B33 < 0 above ~8.2 rad/s (tests/data/refdata/README.md): the reader keeps it."""
     neg = sphere.omega[sphere.B[2, 2] < 0]
     assert neg.size > 0 and neg.min() > 8.1
 

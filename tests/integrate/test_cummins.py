@@ -55,7 +55,8 @@ def test_runaway_is_stopped_and_reported():
 
 @pytest.fixture(scope="module")
 def hemisphere(refdata):
-    """HydroChrono's WAMIT hemisphere, mass ρV, floating with its centre on the surface (refdata.md)."""
+    """HydroChrono's WAMIT hemisphere, mass ρV, floating with its centre on the surface
+    (tests/data/refdata/README.md)."""
     db = read_bemio(refdata / "bemio_sphere" / "sphere.h5")
     m = db.rho * db.disp_vol
     r = 5.0

@@ -1,6 +1,6 @@
 """One floating hemisphere, three BEM codes, three boatland readers: do they tell the same story?
 
-Data (shared/refdata, described in shared/notes/refdata.md; public, Apache-2.0, from WEC-Sim/WEC-Sim):
+Data (tests/data/refdata, described in its README.md; public, Apache-2.0, from WEC-Sim/WEC-Sim):
 
 - ``wamit_sphere/``: WAMIT 7.2, examples/BEMIO/WAMIT/Sphere — irregular-frequency removal on
   (``IRR = 1`` in sphere.out);
@@ -26,7 +26,7 @@ from boatland.hydro.nemoh import read_nemoh
 from boatland.hydro.wamit import read_wamit
 
 BAND = (0.3, 3.0)          # rad/s
-RTOL = 0.03                # the solvers' own differences are 1–2 % (notes/refdata.md)
+RTOL = 0.03                # the solvers' own differences are 1–2 % (tests/data/refdata/README.md)
 PHASE_TOL = RTOL           # rad: the same 3 % of |X3| seen as an angle (≈ 1.7°)
 
 #: NEMOH v3.0.2 has no irregular-frequency removal. The hemisphere's first irregular frequency is at

@@ -2,7 +2,7 @@
 
 Reference: A. Hulme (1982), "The wave forces acting on a floating hemisphere undergoing forced
 periodic oscillations", J. Fluid Mech. 121, 443–463 — table transcribed in
-shared/refdata/hulme (from LHEEA/Hulme_Heaving_Sphere). BEM data: HydroChrono's
+tests/data/refdata/hulme (from LHEEA/Hulme_Heaving_Sphere). BEM data: HydroChrono's
 demos/sphere/hydroData/sphere.h5 (WAMIT, radius 5 m, 200 m depth ≈ deep for these kA).
 """
 
