@@ -611,6 +611,17 @@ def _freq_check(args) -> None:
             raise BoatlandInputError(f"{name} {value:g}: must be > 0")
 
 
+def _freq_directions(scenario, db, beta, key: str) -> None:
+    """Refuse relative directions the database does not cover, naming the option (``key``) that gave them."""
+    import numpy as np
+
+    from boatland.model.wave_directions import direction_problem
+
+    problem = direction_problem(db, np.atleast_1d(beta), name=repr(scenario.vessel.database or db.name))
+    if problem:
+        raise BoatlandInputError(f"{key}: {problem}")
+
+
 def _freq_setup(args, scenario, db):
     from boatland.freqdomain import LandingSetup
 
@@ -625,9 +636,13 @@ def _cmd_rao(args) -> int:
     scenario, db = _freq_load(args.scenario)
     setup = LandingSetup.from_scenario(scenario, db)
     beta = args.direction
+    key = "--direction"
     if beta is None:
         beta = _freq_sea(scenario)[1]
-        beta = 180.0 if beta is None else beta
+        key = f"{scenario.source}: sea: relative direction"
+        if beta is None:
+            beta, key = 180.0, "relative direction (default 180°: no --direction and no sea)"
+    _freq_directions(scenario, db, beta, key)
     T = np.asarray(args.periods, dtype=float)
     if np.any(T <= 0):
         raise BoatlandInputError(f"--periods: all must be > 0 s, got {args.periods}")
@@ -713,6 +728,7 @@ def _cmd_screen(args) -> int:
         raise BoatlandInputError(f"--directions {args.directions}: need N ≥ 1")
     Tp = np.linspace(lo, hi, int(n))
     beta = np.arange(args.directions) * 360.0 / args.directions
+    _freq_directions(scenario, db, beta, f"--directions {args.directions} (every {360.0 / args.directions:g}°)")
     sea, _ = _freq_sea(scenario)
     depth = scenario.sea.water_depth if scenario.sea is not None else None
     table = screening_grid(db, setup, Tp, beta, accept=args.accept, statistics=args.statistics, method=args.method,
@@ -769,6 +785,8 @@ def _cmd_operability(args) -> int:
         scatter = read_scatter(args.scatter)
     for w in caught:
         print(f"warning: {w.message}", file=sys.stderr)
+    _freq_directions(scenario, db, (scatter.direction_deg - setup.heading_deg) % 360.0,
+                     f"{args.scatter}: direction (relative to the vessel's heading {setup.heading_deg:g}°)")
     sea, _ = _freq_sea(scenario)
     depth = scenario.sea.water_depth if scenario.sea is not None else None
     a = availability(db, setup, scatter, accept=args.accept, statistics=args.statistics, method=args.method,

@@ -59,8 +59,9 @@ All quantities per unit wave amplitude, exp(+iωt), phase = lead over the incide
 reference point; DOF order surge … yaw; body frame = local frame at rest (:mod:`boatland.conventions`).
 
 Interpolation in ω (shared by both RAOs): A and B linearly (held at the first tabulated value below
-the band); X linearly in ω and (periodically) in β on its real and imaginary parts, with the exact
-long-wave limit X(0, β) = C[:, 2] below the band — the same interpolation the time-domain excitation
+the band); X linearly in ω and in β on its real and imaginary parts (periodically when the database
+goes round the circle or is a checked symmetric half circle; other directions are refused), with
+the exact long-wave limit X(0, β) = C[:, 2] below the band — the same interpolation the time-domain excitation
 uses (:func:`boatland.model.seastate.excitation_table`,
 :func:`boatland.waves.excitation.interpolate_excitation`). Frequencies above the database's band are
 refused.
@@ -72,9 +73,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from boatland.errors import BoatlandInputError
 from boatland.model.hydrodb import HydroDB
 from boatland.model.landed import ContactLaw, point_map, preload_stiffness, solve_saddle, static_preload, tangents
 from boatland.model.seastate import excitation_table
+from boatland.model.wave_directions import direction_problem
 from boatland.waves.excitation import interpolate_excitation
 
 __all__ = ["HingedResponse", "excitation_force", "free_rao", "hinged_rao", "impedance", "point_map",
@@ -92,11 +95,16 @@ def _omega(db: HydroDB, omega) -> np.ndarray:
 
 
 def _beta(db: HydroDB, beta_deg) -> np.ndarray:
+    """The directions asked for, checked against those the database covers (a half circle of a hull it
+    shows port–starboard symmetric counts as the full circle: :mod:`boatland.model.wave_directions`)."""
     if beta_deg is None:
         return np.asarray(db.wave_dir_deg, dtype=float).copy()
     b = np.atleast_1d(np.asarray(beta_deg, dtype=float))
     if b.ndim != 1 or not np.all(np.isfinite(b)):
         raise ValueError("beta_deg must be finite directions [deg] (a scalar or a 1-D array)")
+    problem = direction_problem(db, b)
+    if problem:
+        raise BoatlandInputError(f"beta_deg: {problem}")
     return b
 
 
@@ -123,9 +131,17 @@ def radiation_coefficients(db: HydroDB, omega) -> tuple[np.ndarray, np.ndarray]:
 def excitation_force(db: HydroDB, omega, beta_deg=None) -> np.ndarray:
     r"""Excitation X(ω, β) per unit wave amplitude, shape (Nw, Nβ, 6) complex [N/m, N m/m].
 
-    Bilinear in (ω, β) on real and imaginary parts, periodic in β, towards the long-wave limit
-    :math:`X(0,\beta) = C_{:,2}` below the band — exactly what the time-domain excitation uses.
-    ``beta_deg`` None = the database's directions.
+    Bilinear in (ω, β) on real and imaginary parts, towards the long-wave limit
+    :math:`X(0,\beta) = C_{:,2}` below the band — exactly what the time-domain excitation uses
+    (:func:`boatland.model.seastate.excitation_table`): periodic in β when the database goes round the
+    circle, or is a half circle of a hull it shows port–starboard symmetric (completed by
+    :math:`X_j(360° - \beta) = s_j X_j(\beta)`). ``beta_deg`` None = the database's directions.
+
+    Raises
+    ------
+    BoatlandInputError
+        A direction outside those the database covers (an asymmetric or partial table, a single
+        direction): :func:`boatland.model.wave_directions.direction_problem`.
     """
     w = _omega(db, omega)
     b = _beta(db, beta_deg)

@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from boatland.model.hydrodb import HydroDB
+from boatland.model.wave_directions import direction_coverage
 
 __all__ = ["summary", "summary_text"]
 
@@ -15,13 +16,15 @@ def summary(db: HydroDB) -> dict:
     Returns
     -------
     dict
-        name, solver, source, frequency band and count, directions, depth, ρ, g, mass, volume,
+        name, solver, source, frequency band and count, directions and their coverage
+        (:func:`boatland.model.wave_directions.direction_coverage`: kind and text), depth, ρ, g, mass, volume,
         centre of gravity, A∞/A₀ availability, heave/roll/pitch natural periods (s, None where not
         defined), panel count, and the warnings of :meth:`HydroDB.diagnostics`.
     """
     w = db.omega
     beta = db.wave_dir_deg
     steps = np.unique(np.round(np.diff(beta), 6)) if beta.size > 1 else np.array([])
+    coverage = direction_coverage(db)
     return {
         "name": db.name,
         "solver": db.provenance.solver,
@@ -35,6 +38,7 @@ def summary(db: HydroDB) -> dict:
         "n_dir": db.n_dir,
         "wave_dir_deg": [float(b) for b in beta],
         "dir_step_deg": float(steps[0]) if steps.size == 1 else None,
+        "dir_coverage": {"kind": coverage.kind, "text": coverage.case},
         "water_depth": None if np.isinf(db.water_depth) else db.water_depth,
         "rho": db.rho,
         "g": db.g,
@@ -68,6 +72,7 @@ def summary_text(db: HydroDB) -> str:
         f"  frequencies     {s['n_freq']} from {w0:.4g} to {w1:.4g} rad/s (largest step {s['d_omega_max']:.3g} rad/s; "
         f"periods {2 * np.pi / w1:.3g}–{2 * np.pi / w0:.4g} s)",
         f"  directions      {dirs}",
+        f"  coverage        {s['dir_coverage']['text']}",
         f"  water           depth {depth}, ρ {s['rho']:g} kg/m³, g {s['g']:g} m/s²",
         f"  mass            {mass}, displaced volume {s['disp_vol']:.4g} m³, "
         f"CoG ({', '.join(f'{c:.3g}' for c in s['cog'])}) m",

@@ -275,6 +275,7 @@ def check_against(scenario, db: HydroDB) -> ScenarioCheck:
                          f"{v.roll_critical_fraction * roll_critical_damping(db):.4g} N m s/rad added to B44")
         except BoatlandInputError as exc:
             problems.append(("vessel.damping.roll_critical_fraction", str(exc)))
+    problems += _sea_directions(scenario, db, notes)
     return ScenarioCheck(problems=tuple(problems), warnings=tuple(warns), notes=tuple(notes))
 
 
@@ -348,4 +349,43 @@ def _clearance(scenario, mesh) -> list[tuple[str, str]]:
         if ds < st.diameter / 2:
             out.append((key, f"the hull overlaps struts[{i}] at t = 0 (by {st.diameter / 2 - ds:.3g} m): the "
                              "fender points must be ahead of the hull"))
+    return out
+
+
+def _sea_directions(scenario, db: HydroDB, notes: list[str]) -> list[tuple[str, str]]:
+    """The sea's directions relative to the vessel against those the database covers (the database's
+    case goes to ``notes``: full circle, completed by port–starboard symmetry, interval, single).
+
+    Each wave system's relative direction is its direction minus the vessel's heading; a short-crested
+    one (cos-2s spreading, :func:`boatland.waves.spectra.spreading_cos2s`, whose cos^2s(u/2) is
+    positive on the whole circle and whose stratified realisation reaches far into the tails) needs
+    the whole circle. Problems are keyed by the direction key as written (or the spreading).
+    """
+    from boatland.model.wave_directions import direction_coverage
+
+    cov = direction_coverage(db)
+    notes.append(cov.describe())
+    if scenario.sea is None or cov.periodic:
+        return []
+    raw = scenario.document.get("sea", {})
+    waves = scenario.sea.waves
+    if "parts" in raw:
+        systems = [(f"sea.parts[{i}].", p, raw["parts"][i]) for i, p in enumerate(waves.parts)]
+    else:
+        systems = [("sea.", waves.parts[0] if hasattr(waves, "parts") else waves, raw)]
+    name = repr(scenario.vessel.database or db.name)
+    heading = scenario.vessel.heading_deg
+    out = []
+    for prefix, w, r in systems:
+        rel = (w.direction_deg - heading) % 360.0
+        if getattr(w, "spreading", None) is not None:
+            what = (f"short-crested waves (cos-2s, s = {w.spreading:g}) about {rel:.10g}° spread over the whole "
+                    "circle, which is")
+            out.append((prefix + "spreading", cov.refusal(what, name) + " for long-crested waves (no spreading)"))
+        elif not cov.covers(rel)[0]:
+            if "relative_direction_deg" in r:
+                out.append((prefix + "relative_direction_deg", cov.refusal(f"{rel:.10g}° is", name)))
+            else:
+                what = f"{w.direction_deg:.10g}° ({rel:.10g}° relative to the vessel's heading {heading:.10g}°) is"
+                out.append((prefix + "direction_deg", cov.refusal(what, name)))
     return out

@@ -34,10 +34,11 @@ from typing import Any
 
 import numpy as np
 
-from boatland.errors import BoatlandWarning
+from boatland.errors import BoatlandInputError, BoatlandWarning
 from boatland.model.hydrodb import HydroDB
 from boatland.model.records import read_elevation_csv
 from boatland.model.tomlspec import SpecError
+from boatland.model.wave_directions import direction_problem, full_circle_excitation
 from boatland.waves.dispersion import wavenumber_scalar
 from boatland.waves.excitation import excitation_series
 from boatland.waves.measured import record_components
@@ -554,18 +555,27 @@ class MeasuredRecord(_Waves):
 def excitation_table(db: HydroDB) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     r"""(omega, beta_deg, X) of a database for :func:`boatland.waves.excitation.excitation_series`.
 
-    Prepends ω = 0 with the exact long-wave limit :math:`X(0, \beta) = C_{:,2}` (0-based heave column
-    of the restoring matrix: a wave much longer than the vessel is a slow rise of the water level,
-    which pushes like a heave displacement of −a; real, in phase with the crest, the same for every
-    β), so the low end interpolates towards it instead of holding X(ω_min).
+    The one place the time domain (:func:`wave_excitation`) and the frequency domain
+    (:func:`boatland.freqdomain.rao.excitation_force`) take X from. Two steps:
+
+    - directions: a half-circle table of a hull the database shows port–starboard symmetric is
+      completed to the circle by :math:`X_j(360° - \beta) = s_j X_j(\beta)`
+      (:func:`boatland.model.wave_directions.full_circle_excitation`); any other table is returned
+      as it is, and :func:`~boatland.waves.excitation.interpolate_excitation` then uses it
+      periodically only if it goes round the circle (NaN outside otherwise; users get a message
+      first from :func:`boatland.model.wave_directions.direction_problem`);
+    - frequencies: prepends ω = 0 with the exact long-wave limit :math:`X(0, \beta) = C_{:,2}` (0-based
+      heave column of the restoring matrix: a wave much longer than the vessel is a slow rise of the
+      water level, which pushes like a heave displacement of −a; real, in phase with the crest, the
+      same for every β), so the low end interpolates towards it instead of holding X(ω_min).
     """
     omega = np.asarray(db.omega, float)
-    X = np.asarray(db.X, complex)
+    beta, X = full_circle_excitation(db)
     if omega[0] > 0:
         X0 = np.broadcast_to(np.asarray(db.C, float)[:, 2][:, None, None], (X.shape[0], X.shape[1], 1))
         omega = np.concatenate([[0.0], omega])
         X = np.concatenate([X0.astype(complex), X], axis=2)
-    return omega, np.asarray(db.wave_dir_deg, float), X
+    return omega, np.asarray(beta, float), X
 
 
 def wave_excitation(components: Components, db: HydroDB, *, dt: float, n_steps: int, x0: float = 0.0,
@@ -606,6 +616,13 @@ def wave_excitation(components: Components, db: HydroDB, *, dt: float, n_steps: 
     Returns
     -------
     ndarray, shape (2 n_steps + 1, 6)
+
+    Raises
+    ------
+    BoatlandInputError
+        A component's direction relative to the vessel is outside the database's directions (a
+        database that does not go round the circle and is not a symmetric half circle:
+        :func:`boatland.model.wave_directions.direction_problem`).
     """
     if not (_is_number(dt) and dt > 0 and math.isfinite(dt)):
         raise ValueError(f"dt must be a finite time step > 0 s, got {dt!r}")
@@ -616,6 +633,10 @@ def wave_excitation(components: Components, db: HydroDB, *, dt: float, n_steps: 
     for name, v in (("x0", x0), ("y0", y0), ("heading_deg", heading_deg)):
         if not (_is_number(v) and math.isfinite(v)):
             raise ValueError(f"{name} must be a finite number, got {v!r}")
+    rel = np.unique(np.mod(np.degrees(components.theta) - heading_deg, 360.0))
+    problem = direction_problem(db, rel)
+    if problem:
+        raise BoatlandInputError(f"wave directions relative to the vessel (heading {heading_deg:g}°): {problem}")
     omega, beta, X = excitation_table(db)
     X_extra = None
     if pile is not None:

@@ -15,14 +15,24 @@ arg X. The position phase :math:`k_i(x_0\cos\theta_i + y_0\sin\theta_i)` is exac
 interpolated).
 
 Interpolation of X (once per component, not per time step)
-    Linear in ω and, periodically (360° wrap), linear in β, on the **real and imaginary parts**.
-    Real/imaginary interpolation is exact for a transfer function that is linear between BEM
-    frequencies, passes correctly through the zeros of |X| (cancellation frequencies, where the
-    phase jumps by π and magnitude/phase interpolation would invent a spurious peak) and needs no
-    phase unwrapping. Its cost is a small magnitude loss where the phase turns fast between
-    samples: |X|(Δarg X)²/8 at mid-interval (0.3 % for 0.15 rad per step). Steps in ω and β
-    should keep Δarg X small — the database's job: for short waves on a long hull X(β) oscillates
-    with k(L/2)Δcos β, so a 15° direction grid is coarse above ω ≈ 1.5 rad/s for a 24 m vessel.
+    Linear in ω and linear in β, on the **real and imaginary parts**. Real/imaginary interpolation
+    is exact for a transfer function that is linear between BEM frequencies, passes correctly
+    through the zeros of |X| (cancellation frequencies, where the phase jumps by π and
+    magnitude/phase interpolation would invent a spurious peak) and needs no phase unwrapping. Its
+    cost is a small magnitude loss where the phase turns fast between samples: |X|(Δarg X)²/8 at
+    mid-interval (0.3 % for 0.15 rad per step). Steps in ω and β should keep Δarg X small — the
+    database's job: for short waves on a long hull X(β) oscillates with k(L/2)Δcos β, so a 15°
+    direction grid is coarse above ω ≈ 1.5 rad/s for a 24 m vessel.
+Directions
+    The table is used periodically in β (360° wrap) only when its directions go round the circle
+    (:func:`periodic_directions`: the wrap-around gap 360° − (β_last − β_first) is no larger than the
+    largest step). Otherwise it is known on [β_first, β_last] only — a single direction only at
+    itself — and a component outside gets **NaN**, never a value interpolated across the part of
+    the circle the table does not cover. A half-circle table of a port–starboard symmetric hull
+    is completed to the circle before it gets here
+    (:func:`boatland.model.wave_directions.full_circle_excitation`), and the model layer refuses
+    directions outside any other table with a message first
+    (:func:`boatland.model.wave_directions.direction_problem`).
 Outside the frequency band
     Above ω_max of the table the excitation is **zero** (and counted: ``n_above``; the model layer
     warns with the variance share). Below the first tabulated frequency X is held at its value
@@ -47,11 +57,40 @@ import numpy as np
 
 from boatland.waves.synthesis import component_phasors, harmonic_sum
 
-__all__ = ["interpolate_excitation", "excitation_coefficients", "excitation_series", "ramp"]
+__all__ = ["DIRECTION_ATOL_DEG", "PERIODIC_STEP_RTOL", "interpolate_excitation", "excitation_coefficients",
+           "excitation_series", "periodic_directions", "ramp"]
+
+#: Two directions closer than this [deg] are the same direction (a component "at" a tabulated one).
+DIRECTION_ATOL_DEG = 1e-9
+#: A table of directions goes round the circle when its wrap-around gap exceeds its largest step by no
+#: more than this fraction of the step (directions printed with two decimals, or stored in float32).
+PERIODIC_STEP_RTOL = 1e-3
 
 
-def interpolate_excitation(omega_c, beta_c_deg, omega, beta_deg, X):
-    r"""X(ω_c, β_c) for each component: bilinear in (ω, β) on real and imaginary parts, periodic in β.
+def periodic_directions(beta_deg) -> bool:
+    r"""Whether a table of directions covers the circle periodically.
+
+    True when the wrap-around gap is no larger than the largest step between tabulated directions,
+
+    .. math:: 360° - (\beta_{N-1} - \beta_0) \le (1 + \epsilon)\max_k (\beta_{k+1} - \beta_k)
+
+    with ε = :data:`PERIODIC_STEP_RTOL`,
+    so that interpolating across the wrap (from β_last to β_first + 360°) is no coarser than inside
+    the table. One direction is never periodic.
+
+    Parameters
+    ----------
+    beta_deg : array_like, shape (Nb,)
+        Tabulated directions [deg], strictly increasing.
+    """
+    b = np.asarray(beta_deg, dtype=float).reshape(-1)
+    if b.size < 2:
+        return False
+    return bool(360.0 - (b[-1] - b[0]) <= (1.0 + PERIODIC_STEP_RTOL) * float(np.max(np.diff(b))))
+
+
+def interpolate_excitation(omega_c, beta_c_deg, omega, beta_deg, X, periodic: bool | None = None):
+    r"""X(ω_c, β_c) for each component: bilinear in (ω, β) on real and imaginary parts.
 
     Parameters
     ----------
@@ -65,18 +104,27 @@ def interpolate_excitation(omega_c, beta_c_deg, omega, beta_deg, X):
         Table directions [deg], increasing within one turn.
     X : ndarray of complex, shape (m, Nb, Nf)
         Transfer function (m outputs, usually the 6 DOF).
+    periodic : bool, optional
+        Use the table periodically in β (360° wrap). Default: :func:`periodic_directions` of
+        ``beta_deg``. When False the table covers [β_0, β_last] only (a single direction: itself, within
+        :data:`DIRECTION_ATOL_DEG`) and components outside get NaN in every output. ``True`` with a
+        single direction uses it for every β.
 
     Returns
     -------
     Xc : ndarray of complex, shape (m, N)
+        NaN for components outside a non-periodic table's directions.
     n_below, n_above : int
         Components below ``omega[0]`` (X held) and above ``omega[-1]`` (X = 0).
     """
     wc = np.asarray(omega_c, dtype=float)
     om = np.asarray(omega, dtype=float)
     beta = np.asarray(beta_deg, dtype=float)
+    bc = np.asarray(beta_c_deg, dtype=float)
     X = np.asarray(X, dtype=complex)
     nf, nb = om.size, beta.size
+    if periodic is None:
+        periodic = periodic_directions(beta)
     # ω: index i and weight f on [omega[i], omega[i+1]]
     if nf == 1:
         i = np.zeros(wc.size, dtype=int)
@@ -86,21 +134,32 @@ def interpolate_excitation(omega_c, beta_c_deg, omega, beta_deg, X):
         f = np.clip((wc - om[i]) / (om[i + 1] - om[i]), 0.0, 1.0)
     below = wc < om[0]
     above = wc > om[-1]
-    # β: periodic bracket [ext[j], ext[j+1]] with ext = beta ∪ {beta[0] + 360}
+    outside = np.zeros(wc.size, dtype=bool)
     if nb == 1:
         j = j1 = np.zeros(wc.size, dtype=int)
         wb = np.zeros(wc.size)
-    else:
+        if not periodic:
+            outside = np.abs(np.mod(bc - beta[0] + 180.0, 360.0) - 180.0) > DIRECTION_ATOL_DEG
+    elif periodic:
+        # periodic bracket [ext[j], ext[j+1]] with ext = beta ∪ {beta[0] + 360}
         ext = np.append(beta, beta[0] + 360.0)
-        b = beta[0] + np.mod(np.asarray(beta_c_deg, dtype=float) - beta[0], 360.0)
+        b = beta[0] + np.mod(bc - beta[0], 360.0)
         j = np.clip(np.searchsorted(ext, b, side="right") - 1, 0, nb - 1)
         wb = np.clip((b - ext[j]) / (ext[j + 1] - ext[j]), 0.0, 1.0)
         j1 = (j + 1) % nb
+    else:
+        # the turn that starts just below beta[0]; known on [beta[0], beta[-1]] only
+        b = beta[0] - DIRECTION_ATOL_DEG + np.mod(bc - beta[0] + DIRECTION_ATOL_DEG, 360.0)
+        outside = b > beta[-1] + DIRECTION_ATOL_DEG
+        j = np.clip(np.searchsorted(beta, b, side="right") - 1, 0, nb - 2)
+        wb = np.clip((b - beta[j]) / (beta[j + 1] - beta[j]), 0.0, 1.0)
+        j1 = j + 1
     i1 = np.minimum(i + 1, nf - 1)
     lo = (1.0 - f) * X[:, j, i] + f * X[:, j, i1]
     hi = (1.0 - f) * X[:, j1, i] + f * X[:, j1, i1]
     Xc = (1.0 - wb) * lo + wb * hi
     Xc[:, above] = 0.0
+    Xc[:, outside] = np.nan
     return Xc, int(np.count_nonzero(below)), int(np.count_nonzero(above))
 
 

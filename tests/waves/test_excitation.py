@@ -15,7 +15,7 @@ import numba
 import numpy as np
 import pytest
 
-from boatland.waves.excitation import excitation_series, interpolate_excitation, ramp
+from boatland.waves.excitation import excitation_series, interpolate_excitation, periodic_directions, ramp
 from boatland.waves.realisation import Components, concatenate, regular_components
 from boatland.waves.synthesis import elevation
 
@@ -160,3 +160,42 @@ def test_excitation_does_not_depend_on_thread_count(threads):
     finally:
         numba.set_num_threads(old)
     assert np.array_equal(F, ref)
+
+
+@pytest.mark.parametrize("beta, periodic", [
+    (np.arange(0.0, 360.0, 5.0), True),
+    (np.arange(0.0, 181.0, 5.0), False),          # a half circle: 180° gap against 5° steps
+    (np.arange(0.0, 361.0, 30.0), True),          # 0 … 360 inclusive
+    (np.array([0.0, 180.0]), True),               # the gap equals the step
+    (np.array([0.0, 51.43, 102.86, 154.29, 205.71, 257.14, 308.57]), True),  # 360/7 printed to 2 decimals
+    (np.array([30.0, 150.0, 270.0]), True),
+    (np.array([0.0, 90.0, 180.0]), False),
+    (np.array([180.0]), False),
+])
+def test_periodic_directions(beta, periodic):
+    assert periodic_directions(beta) is periodic
+
+
+def test_a_half_circle_table_is_not_wrapped_nan_outside():
+    """0–180° is known on 0–180° only: never interpolated from 180° back to 360° (sway would be 0 there)."""
+    rng = np.random.default_rng(1)
+    om = np.array([0.5, 1.0, 2.0])
+    beta = np.arange(0.0, 181.0, 45.0)
+    X = rng.normal(size=(6, beta.size, 3)) + 1j * rng.normal(size=(6, beta.size, 3))
+    bc = np.array([0.0, 22.5, 180.0, 180.0 + 1e-12, -1e-12, 360.0, -360.0, 225.0, 270.0, 315.0, 180.1, -0.1])
+    Xc, _, _ = interpolate_excitation(np.full(bc.size, 1.0), bc, om, beta, X)
+    inside = np.array([True] * 7 + [False] * 5)
+    assert np.all(np.isnan(Xc[:, ~inside])) and np.all(np.isfinite(Xc[:, inside]))
+    assert np.array_equal(Xc[:, 0], X[:, 0, 1]) and np.allclose(Xc[:, 1], 0.5 * (X[:, 0, 1] + X[:, 1, 1]))
+    assert np.allclose(Xc[:, 2:4], X[:, -1:, 1], rtol=1e-12) and np.allclose(Xc[:, 4:7], X[:, :1, 1], rtol=1e-12)
+    # the caller may still ask for the periodic use explicitly
+    Xp, _, _ = interpolate_excitation(np.array([1.0]), np.array([270.0]), om, beta, X, periodic=True)
+    assert np.allclose(Xp[:, 0], 0.5 * (X[:, -1, 1] + X[:, 0, 1]))
+
+
+def test_a_single_direction_is_used_at_that_direction_only():
+    om = np.array([0.5, 1.0])
+    X = np.ones((6, 1, 2), complex)
+    bc = np.array([180.0, -180.0, 540.0, 180.0 + 1e-10, 170.0, 0.0])
+    Xc, _, _ = interpolate_excitation(np.full(bc.size, 0.7), bc, om, np.array([180.0]), X)
+    assert np.all(Xc[:, :4] == 1.0) and np.all(np.isnan(Xc[:, 4:]))
