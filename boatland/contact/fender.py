@@ -22,9 +22,13 @@ fender line closest to the tube axis,
 .. math:: s^* = \mathrm{clip}\!\left(-\frac{(x + Rp_c - a_c)_{xy}\cdot(Rd_c)_{xy}}{|(Rd_c)_{xy}|^2},
           -w_c, w_c\right), \qquad Q = x + R(p_c + s^* d_c),
 
-its normal is horizontal from the axis to Q, :math:`n = (Q - a_c)_{xy}/|(Q - a_c)_{xy}|` (it follows
-the tube surface), the penetration is :math:`\delta = \rho_c - |(Q - a_c)_{xy}|`, and the tangents are
-:math:`t_v = e_z` and :math:`t_h = e_z \times n`. The contact is **off the landing** when Q is above
+where the tube meets the fender's face (the axis projects onto the line, :math:`|s| \le w_c`) the
+normal is the face's, :math:`n = -m` with :math:`m = (R(d_c \times e_z))_{xy}` normalised (from the tube
+towards the vessel), and the penetration is :math:`\delta = \rho_c - (a_c - Q)\cdot m` — a deep
+compression of a soft fender past the tube's axis stays a compression; where it meets the end of the
+line the normal follows the tube surface to that end, :math:`n = (Q - a_c)_{xy}/|(Q - a_c)_{xy}|`,
+:math:`\delta = \rho_c - |(Q - a_c)_{xy}|` (continuous with the face at :math:`|s| = w_c`). The
+tangents are :math:`t_v = e_z` and :math:`t_h = e_z \times n`. The contact is **off the landing** when Q is above
 or below the tube, or when the tube has passed the end of the fender line by a tube radius (no
 contact is possible there): the trial ends with that incident.
 
@@ -303,13 +307,22 @@ def _point_kinematics(R, x, v, C, c, cs, kin):
     ax, ay = C.AX[c, 0], C.AX[c, 1]
     rho = C.RT[c]
     if math.isfinite(rho):
-        hx, hy = qx - ax, qy - ay
-        dist = math.sqrt(hx * hx + hy * hy)
-        if dist > 0.0:
+        # the fender face's outward normal m = R (d × e_z), horizontal part
+        d = C.D[c]
+        bx, by = d[1], -d[0]
+        mx = R[0, 0] * bx + R[0, 1] * by
+        my = R[1, 0] * bx + R[1, 1] * by
+        mm = math.sqrt(mx * mx + my * my)
+        mx, my = mx / mm, my / mm
+        front = (ax - qx) * mx + (ay - qy) * my        # the tube axis ahead of the fender face at Q
+        if abs(su) <= C.HW[c] or front <= 0.0:
+            nx, ny = -mx, -my                          # the tube meets the fender's face
+            delta = rho - front
+        else:                                          # ... or the end of the fender line
+            hx, hy = qx - ax, qy - ay
+            dist = math.sqrt(hx * hx + hy * hy)
             nx, ny = hx / dist, hy / dist
-        else:
-            nx, ny = C.N0[c, 0], C.N0[c, 1]
-        delta = rho - dist
+            delta = rho - dist
         past_end = abs(su) - C.HW[c] >= rho
     else:  # flat plate through AX with normal N0
         nx, ny = C.N0[c, 0], C.N0[c, 1]

@@ -186,8 +186,12 @@ class LandingSetup:
             raise BoatlandInputError(f"landing: shear_stiffness = {self.shear_stiffness!r} must be > 0 (inf: rigid)")
         object.__setattr__(self, "points", P)
         object.__setattr__(self, "normals", N)
-        object.__setattr__(self, "shear_damping",
-                           np.array(np.broadcast_to(np.asarray(self.shear_damping, dtype=float), (P.shape[0],))))
+        c_t = np.asarray(self.shear_damping, dtype=float).ravel()
+        if c_t.size not in (1, P.shape[0]):
+            if not np.all(c_t == c_t[0]):
+                raise BoatlandInputError(f"landing: shear_damping has {c_t.size} values for {P.shape[0]} points")
+            c_t = c_t[:1]                       # one value for all (e.g. after replace(points=...))
+        object.__setattr__(self, "shear_damping", np.array(np.broadcast_to(c_t, (P.shape[0],))))
         object.__setattr__(self, "thrust_position", np.asarray(self.thrust_position, dtype=float).reshape(3))
         object.__setattr__(self, "additional_damping", np.asarray(self.additional_damping, dtype=float))
 
@@ -718,8 +722,9 @@ def sea_response(db: HydroDB, setup: LandingSetup, parts, *, water_depth: float 
     .. math:: m_k = \sum_p \int_0^\infty \omega^k \int D_p(\theta)\,|H(\omega, \theta - \psi)|^2\,d\theta\;
               S_p(\omega)\,d\omega
 
-    (seed 002 eq. 3.41–3.45; a long-crested part has :math:`D_p = \delta(\theta - \bar\theta_p)`, a
-    short-crested one its cos-2s spreading on a ``spreading_step_deg`` grid within ±90°).
+    (Grøtting 2015 eq. 3.41–3.45; a long-crested part has :math:`D_p = \delta(\theta - \bar\theta_p)`, a
+    short-crested one its cos-2s spreading on a ``spreading_step_deg`` grid over the whole circle, as the
+    time domain draws it).
 
     Parameters
     ----------
@@ -745,7 +750,7 @@ def sea_response(db: HydroDB, setup: LandingSetup, parts, *, water_depth: float 
         if p.spreading is None:
             d, wgt = np.array([p.direction_deg]), np.array([1.0])
         else:
-            d = p.direction_deg + np.arange(-90.0, 90.0 + 1e-9, spreading_step_deg)
+            d = p.direction_deg + np.arange(-180.0, 180.0, spreading_step_deg)   # the whole circle, as the TD
             wgt = spreading_cos2s(np.radians(d), math.radians(p.direction_deg), p.spreading)
             wgt = wgt / wgt.sum()
         dirs.append(d)

@@ -6,8 +6,9 @@ the quantity the Wu screening is built on (boatland.freqdomain.screening).
 Time domain: scenarios/ctv_landing.toml (ctv24, two contacts, 80 kN, head seas, Tp 7 s) with Hs 0.1 m
 and μ_s = μ_k = 2, k_v = 0 so the fender never slips (the linear stuck case), 1800 s, seeds 1 and 2;
 statistics of the summed normal and vertical contact forces after t = 100 s (thrust ramp 20 s, wave ramp
-2 Tp, radiation memory 40 s). Frequency domain: :func:`hinged_rao` with the fender's spring normal and the
-thrust preload, summed over the contacts, in the same spectrum.
+2 Tp, state-space radiation memory). Frequency domain: the landed vessel with the same contacts
+(:func:`boatland.freqdomain.screening.landed_response`: the fender's normal spring–damper and the rubber's
+shear spring–damper, the thrust preload), summed over the contacts, in the same spectrum.
 
 Tolerance: 3 standard errors of a standard deviation estimated from a Gaussian record of length T,
 :math:`SE(\\hat\\sigma)/\\sigma = \\tfrac12\\sqrt{(2\\pi/T)\\int S_r^2\\,d\\omega}\\,/\\int S_r\\,d\\omega` with
@@ -21,8 +22,8 @@ import warnings
 import numpy as np
 import pytest
 
-from boatland.freqdomain import LandingSetup, hinged_rao
-from boatland.freqdomain.screening import default_omega
+from boatland.freqdomain import LandingSetup
+from boatland.freqdomain.screening import default_omega, landed_response
 from boatland.scenario_check import default_scenario_path, load, resolve_database
 from boatland.trial.simulate import simulate
 
@@ -39,8 +40,7 @@ def case():
                       "simulation.duration": 1800.0, "landing.diffraction": False})  # open sea, as the FD side
     setup = LandingSetup.from_scenario(s, db)
     w = default_omega(db)
-    h = hinged_rao(db, w, setup.points, beta_deg=[180.0], normal=setup.normals, stiffness=setup.stiffness,
-                   damping=setup.damping, thrust=setup.thrust, thrust_position=setup.thrust_position)
+    h = landed_response(db, setup, w, [180.0])
     Sr = np.abs(h.contact_components()[:, 0].sum(axis=1)) ** 2 * s.sea.waves.parts[0].spectrum(w)[:, None]
     wt = np.gradient(w)
     sigma = np.sqrt(Sr.T @ wt)                                   # (normal, vertical, horizontal)
