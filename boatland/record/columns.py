@@ -87,7 +87,7 @@ def bow_elevation(info) -> np.ndarray:
     ramped in as the excitation is (:func:`boatland.trial.simulate.wave_ramp`); zeros without waves."""
     from boatland.record.scene import pile_of, sea_coefficients
     from boatland.trial.simulate import wave_ramp
-    from boatland.waves.synthesis import harmonic_sum
+    from boatland.waves.synthesis import harmonic_series
 
     n, dt = info.n_steps, info.dt
     if info.waves is None:
@@ -98,4 +98,4 @@ def bow_elevation(info) -> np.ndarray:
     gx, gy = x0 + np.cos(psi) * bx - np.sin(psi) * by, y0 + np.sin(psi) * bx + np.cos(psi) * by
     comps = info.waves.realise(info.scenario.simulation.seed, n * dt)
     coef = sea_coefficients(comps, gx, gy, pile_of(info.scenario, info.db, info.waves))
-    return harmonic_sum(comps.omega, coef, 0.0, dt, n + 1)[:, 0] * wave_ramp(info.scenario, dt, n)[::2]
+    return harmonic_series(comps.omega, coef, 0.0, dt, n + 1)[:, 0] * wave_ramp(info.scenario, dt, n)[::2]

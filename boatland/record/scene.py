@@ -69,14 +69,14 @@ class Scene:
         """Elevation (len(t), P) of the patch vertices at the times ``t`` (a uniform grid), or None."""
         if self.components is None or len(t) == 0:
             return None
-        from boatland.waves.synthesis import harmonic_sum
+        from boatland.waves.synthesis import harmonic_series
 
         cp = self.components
         if "_coef" not in self.__dict__:       # complex amplitudes at the patch vertices, computed once
             X, Y, _ = self.patch_grid()
             object.__setattr__(self, "_coef", sea_coefficients(cp, X, Y, self.pile))
         h = float(t[1] - t[0]) if len(t) > 1 else 1.0
-        eta = harmonic_sum(cp.omega, self.__dict__["_coef"], float(t[0]), h, len(t))
+        eta = harmonic_series(cp.omega, self.__dict__["_coef"], float(t[0]), h, len(t))
         return eta * self.ramp(np.asarray(t))[:, None]
 
 

@@ -9,14 +9,21 @@ Linear superposition (seed 000 eq. 3.32, seed 001 eq. 2.45) in the exp(+iωt) co
 
 θ_i = direction of travel (global frame), φ_i = phase at the global origin.
 
-Two kernels, both serial (no ``parallel=True``, no threads), so results do not depend on the number of
-threads:
+Kernels, all serial (no ``parallel=True``, no threaded FFT), so results do not depend on the number
+of threads:
 
-- :func:`harmonic_sum` on a uniform time grid: :math:`y_j(t_n) = \mathrm{Re}\sum_i c_{ji} e^{i\omega_i t_n}`
-  by phasor rotation, :math:`z_i \leftarrow z_i e^{i\omega_i\Delta t}` (one complex multiply per
-  component and step instead of a cos and a sin), re-anchored every :data:`REANCHOR` steps with the
+- :func:`harmonic_series` on a uniform time grid — what callers use: the cheaper of the two sums below
+  by the cost estimate of :func:`synthesis_costs` (both give the same numbers to ~1e-13 of the
+  amplitudes).
+- :func:`harmonic_sum` on a uniform time grid, the direct sum (and the tests' oracle):
+  :math:`y_j(t_n) = \mathrm{Re}\sum_i c_{ji} e^{i\omega_i t_n}` by phasor rotation,
+  :math:`z_i \leftarrow z_i e^{i\omega_i\Delta t}` (one complex multiply per component and step
+  instead of a cos and a sin), re-anchored every :data:`REANCHOR` steps with the
   exact :math:`e^{i\omega_i t_n}` so the rounding error stays below ~1e-13 of the amplitude over any
   record length. The component sums are vectorised (reassociated) — same result on every run.
+  Cost ∝ N n_t: with the non-repetition rule (N ∝ duration) quadratic in the duration.
+- :func:`boatland.waves.nufft.harmonic_sum_nufft`: the same sums by a type-1 non-uniform FFT, cost
+  O(N + n_t log n_t) (Greengard & Lee 2004).
 - :func:`elevation` at arbitrary points and times by direct cosine evaluation.
 """
 
@@ -27,7 +34,13 @@ import math
 import numba
 import numpy as np
 
-__all__ = ["REANCHOR", "harmonic_sum", "elevation", "elevation_series", "component_phasors"]
+from boatland.waves.nufft import harmonic_sum_nufft, nufft_grid
+
+__all__ = ["REANCHOR", "METHODS", "harmonic_sum", "harmonic_series", "synthesis_costs", "synthesis_method",
+           "elevation", "elevation_series", "component_phasors"]
+
+#: Summation methods of :func:`harmonic_series`.
+METHODS = ("auto", "direct", "nufft")
 
 #: Steps between exact re-evaluations of the phasors in :func:`harmonic_sum`.
 REANCHOR = 256
@@ -88,6 +101,78 @@ def harmonic_sum(omega, c, t0: float, h: float, n: int) -> np.ndarray:
     return out
 
 
+# Cost model [s] of the two sums (CPU time, bench/bench_waves.py; bench/README.md "Wave synthesis"):
+# direct n (N (_D_N + _D_NM m) + _D_M m): the phasor update per component and step, a multiply-add per
+# output, the store per output; NUFFT _F_0 + ⌈m/2⌉ (_F_PAIR + _F_GRID M + _F_COMP N): fixed costs, the
+# FFT, zeroing and read-out per grid point, the gridding per component.
+_D_N = 0.8e-9
+_D_NM = 0.45e-9
+_D_M = 5e-9
+_F_0 = 1e-4
+_F_PAIR = 4e-5
+_F_GRID = 6e-8
+_F_COMP = 6e-7
+
+
+def synthesis_costs(N: int, n: int, m: int) -> tuple[float, float]:
+    r"""Estimated times [s] of the direct sum and of the NUFFT for N components, n times, m outputs.
+
+    .. math::
+        T_{direct} &= n\,\bigl(N(0.8 + 0.45\,m) + 5\,m\bigr)\ \mathrm{ns}, \\
+        T_{NUFFT} &= 100\ \mu\mathrm{s} + \lceil m/2\rceil\,\bigl(40\ \mu\mathrm{s} + 60\ \mathrm{ns}\cdot M
+                     + 0.6\ \mu\mathrm{s}\cdot N\bigr),
+
+    M ≈ 2n the FFT length (:func:`boatland.waves.nufft.nufft_grid`). Constants fitted to CPU times
+    on the project's 2-vCPU Xeon (bench/README.md, "Wave synthesis"). Both grow ∝ n, so for long
+    series the rule is a number of components: the NUFFT from N ≈ 100 (m = 1 or 6, n ≥ 10⁴); short
+    series need more (N ≈ 300 at n = 1 000) and below n ≈ 500 the direct sum always wins. Near the
+    crossover both cost about the same, so the fit need not be sharp.
+    """
+    N, n, m = int(N), int(n), int(m)
+    direct = n * (N * (_D_N + _D_NM * m) + _D_M * m)
+    M = nufft_grid(max(n, 1))[2]
+    nufft = _F_0 + (m + 1) // 2 * (_F_PAIR + _F_GRID * M + _F_COMP * N)
+    return direct, nufft
+
+
+def synthesis_method(N: int, n: int, m: int) -> str:
+    """``"direct"`` or ``"nufft"``: the cheaper by :func:`synthesis_costs` (a fixed rule, the same on
+    every machine and thread count, so the choice never changes a result between runs)."""
+    direct, nufft = synthesis_costs(N, n, m)
+    return "nufft" if nufft < direct else "direct"
+
+
+def harmonic_series(omega, c, t0: float, h: float, n: int, method: str = "auto") -> np.ndarray:
+    r"""Real sums :math:`y_j(t_n) = \mathrm{Re}\sum_i c_{ji}\, e^{i\omega_i t_n}` on :math:`t_n = t_0 + n h`.
+
+    What callers use for long series: the direct sum (:func:`harmonic_sum`) or the non-uniform FFT
+    (:func:`boatland.waves.nufft.harmonic_sum_nufft`), whichever :func:`synthesis_method` estimates
+    cheaper. Both agree to ~1e-13 of :math:`\sum_i |c_{ji}|` (≲ 1e-11 of the series' RMS for
+    thousands of components); the cost of the NUFFT is O(N + n log n), linear-logarithmic in the
+    duration, against O(N n) for the direct sum.
+
+    Parameters
+    ----------
+    omega, c, t0, h, n
+        As :func:`harmonic_sum`.
+    method : {"auto", "direct", "nufft"}
+        Force one sum (tests, benchmarks) or choose by cost (default).
+
+    Returns
+    -------
+    ndarray, shape (n, m)
+    """
+    if method not in METHODS:
+        raise ValueError(f"method must be one of {', '.join(map(repr, METHODS))}, got {method!r}")
+    c = np.atleast_2d(np.asarray(c, dtype=complex))
+    omega = np.asarray(omega, dtype=float)
+    if method == "auto":
+        method = synthesis_method(omega.size, n, c.shape[0])
+    if method == "nufft":
+        return harmonic_sum_nufft(omega, c, t0, h, n)
+    return harmonic_sum(omega, c, t0, h, n)
+
+
 @numba.njit(cache=True)
 def _elevation(omega, k, a, theta, phi, x, y, t, out):
     N = omega.size
@@ -114,7 +199,7 @@ def elevation(components, x, y, t) -> np.ndarray:
     -------
     ndarray, shape (T, P)
         Elevation, direct evaluation of the sum in the module docstring (cost T·P·N cosines; use
-        :func:`elevation_series` for long uniform records).
+        :func:`elevation_series` for uniform records).
     """
     xs = np.atleast_1d(np.asarray(x, dtype=float)).ravel()
     ys = np.atleast_1d(np.asarray(y, dtype=float)).ravel()
@@ -137,6 +222,8 @@ def component_phasors(components, x, y) -> np.ndarray:
     return cp.a * np.exp(1j * (cp.phi - cp.k * (x * np.cos(cp.theta) + y * np.sin(cp.theta))))
 
 
-def elevation_series(components, x: float, y: float, t0: float, h: float, n: int) -> np.ndarray:
-    """Elevation [m] at one point (x, y) on the uniform grid t_n = t0 + n h, n < ``n`` (fast)."""
-    return harmonic_sum(components.omega, component_phasors(components, x, y), t0, h, n)[:, 0]
+def elevation_series(components, x: float, y: float, t0: float, h: float, n: int,
+                     method: str = "auto") -> np.ndarray:
+    """Elevation [m] at one point (x, y) on the uniform grid t_n = t0 + n h, n < ``n``
+    (:func:`harmonic_series` with ``method``)."""
+    return harmonic_series(components.omega, component_phasors(components, x, y), t0, h, n, method)[:, 0]
