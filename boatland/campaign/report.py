@@ -23,7 +23,11 @@ from boatland.campaign.stats import limiting_hs
 from boatland.campaign.store import FORMAT, INCIDENT_PREFIX
 from boatland.errors import BoatlandInputError
 
-__all__ = ["read_store", "write_report"]
+__all__ = ["read_store", "write_report", "REPORT_FILES"]
+
+#: Every file :func:`write_report` may write into its folder.
+REPORT_FILES = ("cases.csv", "cases.md", "limiting_hs.csv", "limiting_hs.md", "p_vs_hs.png",
+                "limiting_hs_polar.png", "time_to_incident.png")
 
 HS_KEY = "sea.Hs"
 DIR_KEYS = ("sea.relative_direction_deg", "sea.direction_deg")

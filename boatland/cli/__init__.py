@@ -7,8 +7,8 @@ and exit with status 2; anything else is a bug and keeps its traceback.
 
 from __future__ import annotations
 
-import argparse
 import logging
+import os
 import sys
 
 from boatland import __version__
@@ -22,9 +22,17 @@ COMMANDS = ("run", "replay", "plot", "campaign", "report", "scenario", "hydro", 
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Run the command line; returns the exit status."""
+    """Run the command line; returns the exit status.
+
+    0 done; 2 a user mistake or an environment failure (unwritable path, disk full, out of memory:
+    one line, no traceback); 3 a trial blew up; 1 some campaign trials failed; 130 interrupted;
+    141 the reader of the output went away (e.g. ``| head``), quietly.
+    """
     parser = _parser()
-    args = parser.parse_args(argv)
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as exc:           # --help, --version, or a one-line argument error
+        return exc.code if isinstance(exc.code, int) else 2
     logging.basicConfig(level=logging.INFO if args.verbose else logging.WARNING,
                         format="%(levelname)s: %(message)s")
     if not hasattr(args, "func"):
@@ -33,17 +41,45 @@ def main(argv: list[str] | None = None) -> int:
     try:
         return int(args.func(args) or 0)
     except BoatlandInputError as exc:
-        print(f"boatland: error: {exc}", file=sys.stderr)
+        _error(str(exc))
         return exc.exit_status
     except KeyboardInterrupt:
         print("boatland: interrupted", file=sys.stderr)
         return 130
+    except BrokenPipeError:
+        _silence_stdout()
+        return 141
+    except MemoryError:
+        _error("out of memory; shorten the run (simulation.duration) or split it into several runs")
+        return 2
+    except OSError as exc:              # the environment: unwritable path, disk full, ...
+        where = f"{exc.filename}: " if exc.filename else ""
+        _error(f"{where}{exc.strerror or exc}")
+        return 2
 
 
-def _parser() -> argparse.ArgumentParser:
+def _error(message: str) -> None:
+    try:
+        print(f"boatland: error: {message}", file=sys.stderr)
+    except (BrokenPipeError, OSError):
+        pass
+
+
+def _silence_stdout() -> None:
+    """After a broken pipe: point stdout at /dev/null so the interpreter's last flush stays quiet."""
+    try:
+        null = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(null, sys.stdout.fileno())
+    except (OSError, ValueError, AttributeError):  # a captured stdout (tests) has no descriptor
+        pass
+
+
+def _parser():
     import importlib
 
-    p = argparse.ArgumentParser(
+    from boatland.cli.guard import OneLineParser
+
+    p = OneLineParser(
         prog="boatland",
         description="Crew transfer vessel on a boat landing: will the fender hold, and if it slips, "
                     "when and how far?",

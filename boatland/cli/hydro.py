@@ -7,6 +7,7 @@ import json
 from pathlib import Path
 
 from boatland.cli.common import DEFAULT_VESSEL, resolve_db
+from boatland.cli.guard import Output, check_outputs, positive
 
 __all__ = ["add_parser", "cmd_import", "cmd_info", "cmd_build", "cmd_list"]
 
@@ -28,9 +29,9 @@ def add_parser(sub) -> None:
     imp.add_argument("path", type=Path, help="BEM output file or folder")
     imp.add_argument("-o", "--output", type=Path, required=True, help="database to write (.h5)")
     imp.add_argument("--format", choices=sorted(FORMATS), help="force a reader instead of detecting it")
-    imp.add_argument("--rho", type=float, help="water density [kg/m³] for formats that do not store it "
+    imp.add_argument("--rho", type=positive("kg/m³", 1e5), help="water density [kg/m³] for formats that do not store it "
                                                "(WAMIT; default 1025)")
-    imp.add_argument("--g", type=float, help="gravity [m/s²] for formats that do not store it")
+    imp.add_argument("--g", type=positive("m/s²", 1e3), help="gravity [m/s²] for formats that do not store it")
     imp.add_argument("--name", help="vessel name to store (default: from the file)")
     imp.set_defaults(func=cmd_import)
 
@@ -62,6 +63,7 @@ def add_parser(sub) -> None:
 def cmd_import(args) -> int:
     from boatland.hydro import read_hydro, write_bemio
 
+    check_outputs([Output("-o", args.output)], [args.path])
     db, fmt = read_hydro(args.path, fmt=args.format, rho=args.rho, g=args.g)
     if args.name:
         db = db.replace(name=args.name)
@@ -88,6 +90,7 @@ def cmd_build(args) -> int:
     from boatland.hydro.build import build_from_file
 
     out = args.output or Path(args.vessel.stem + ".h5")
+    check_outputs([Output("-o", out)], [args.vessel])
     db = build_from_file(args.vessel, out, progress=not args.no_progress)
     print(f"wrote {out}: {db.n_freq} frequencies, {db.n_dir} directions, "
           f"{db.mesh.n_panels if db.mesh is not None else 0} panels")

@@ -6,6 +6,8 @@ import json
 import sys
 from pathlib import Path
 
+from boatland.errors import BoatlandInputError
+from boatland.reproducible import pinned
 from boatland.cli.common import freq_check, freq_load, freq_sea, freq_setup, scenario_argument, screening_options
 
 __all__ = ["add_parser", "cmd"]
@@ -24,6 +26,7 @@ def add_parser(sub) -> None:
     op.set_defaults(func=cmd)
 
 
+@pinned
 def cmd(args) -> int:
     import warnings
 
@@ -31,6 +34,8 @@ def cmd(args) -> int:
     from boatland.freqdomain import availability, read_scatter
 
     freq_check(args)
+    if not args.scatter.is_file():
+        raise BoatlandInputError(f"{args.scatter}: no such file")
     scenario, db = freq_load(args.scenario)
     setup = freq_setup(args, scenario, db)
     with warnings.catch_warnings(record=True) as caught:

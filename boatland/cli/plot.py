@@ -5,6 +5,8 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
+from boatland.cli.guard import Output, check_outputs
+
 __all__ = ["add_parser", "cmd"]
 
 
@@ -23,9 +25,11 @@ def cmd(args) -> int:
     from boatland.record.plot import plot_run
     from boatland.record.reader import read_run_log
 
+    out = args.output or args.log.with_suffix(".png")
+    check_outputs([Output("-o", out, "figure")], [args.log])
     log = read_run_log(args.log)
     for note in log.notes:
         print(f"note: {note}", file=sys.stderr)
-    out = plot_run(log, args.output or args.log.with_suffix(".png"))
+    out = plot_run(log, out)
     print(f"wrote {out}")
     return 0

@@ -6,6 +6,8 @@ import json
 from pathlib import Path
 
 from boatland.cli.common import freq_load, freq_sea, scenario_argument
+from boatland.cli.guard import Output, finite, positive
+from boatland.reproducible import pinned
 from boatland.errors import BoatlandInputError
 
 __all__ = ["add_parser", "cmd"]
@@ -19,9 +21,9 @@ def add_parser(sub) -> None:
                     "(normal, vertical, horizontal, all contacts) and the motion of the free vessel's fender point, "
                     "per unit wave amplitude, in the scenario's relative wave direction.")
     scenario_argument(rao)
-    rao.add_argument("--direction", type=float, metavar="DEG",
+    rao.add_argument("--direction", type=finite, metavar="DEG",
                      help="relative wave direction [deg] (180 = head seas; default the scenario's sea, else 180)")
-    rao.add_argument("--periods", type=float, nargs="+", metavar="T",
+    rao.add_argument("--periods", type=positive("s", 1e4), nargs="+", metavar="T",
                      default=[3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 10.0, 12.0, 15.0, 20.0],
                      help="wave periods of the table [s]")
     rao.add_argument("-o", "--output", type=Path, metavar="PNG", help="write a figure")
@@ -32,12 +34,14 @@ def add_parser(sub) -> None:
     rao.set_defaults(func=cmd)
 
 
+@pinned
 def cmd(args) -> int:
     import numpy as np
 
     from boatland.freqdomain import LandingSetup, free_rao, hinged_rao, point_map
 
-    scenario, db = freq_load(args.scenario)
+    scenario, db = freq_load(args.scenario, [Output("-o", args.output, "figure"),
+                                             Output("--compare-open-sea", args.compare_open_sea, "figure")])
     setup = LandingSetup.from_scenario(scenario, db)
     beta = args.direction
     if beta is None:

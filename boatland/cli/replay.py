@@ -5,6 +5,8 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
+from boatland.cli.guard import Output, check_outputs, integer
+
 __all__ = ["add_parser", "cmd"]
 
 
@@ -20,6 +22,10 @@ def add_parser(sub) -> None:
     how.add_argument("--serve", action="store_true", help="serve to Rerun viewers (prints the URL to open)")
     how.add_argument("--spawn", action="store_true", help="start a Rerun viewer (needs a display)")
     how.add_argument("--connect", metavar="URL", nargs="?", const="", help="send to a Rerun viewer already listening")
+    rpl.add_argument("--bind", metavar="ADDR", default="127.0.0.1",
+                     help="address the --serve server listens on (default 127.0.0.1: this machine only; 0.0.0.0 "
+                          "opens it to the network, without authentication)")
+    rpl.add_argument("--port", type=integer(1, 65535), default=9876, help="port of --serve (default 9876)")
     rpl.set_defaults(func=cmd)
 
 
@@ -34,7 +40,8 @@ def cmd(args) -> int:
         target = f"connect={args.connect}" if args.connect else "connect"
     else:
         target = f"save={args.save or args.log.with_suffix('.rrd')}"
-    done = replay(args.log, target)
+    check_outputs([Output("--save", Path(target[5:]) if target.startswith("save=") else None)], [args.log])
+    done = replay(args.log, target, bind=args.bind, port=args.port)
     for note in done.notes:
         print(f"note: {note}", file=sys.stderr)
     log = done.log

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from boatland.cli.guard import Output, check_outputs, in_range
 from boatland.errors import BoatlandInputError
 
 __all__ = ["add_parser", "cmd"]
@@ -19,7 +20,7 @@ def add_parser(sub) -> None:
     rep.add_argument("-o", "--output", type=Path, default=Path("report"), help="folder (default: ./report)")
     rep.add_argument("--incident", help="incident definition for limiting Hs and figures (default: the "
                                         "first slip-distance definition)")
-    rep.add_argument("--target", type=float, default=0.1,
+    rep.add_argument("--target", type=in_range(0.0, 1.0, hi_open=True), default=0.1,
                      help="accepted probability of the incident within the access (default 0.1)")
     rep.set_defaults(func=cmd)
 
@@ -29,6 +30,9 @@ def cmd(args) -> int:
 
     if not 0.0 < args.target < 1.0:
         raise BoatlandInputError(f"--target must lie in (0, 1), got {args.target}")
+    from boatland.campaign.report import REPORT_FILES
+
+    check_outputs([Output("-o", args.output, "folder", REPORT_FILES)], [args.store])
     files = write_report(args.store, args.output, incident=args.incident, target=args.target)
     for f in files:
         print(f"wrote {f}")

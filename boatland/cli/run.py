@@ -3,10 +3,11 @@
 from __future__ import annotations
 
 import json
+import os
 import sys
 from pathlib import Path
 
-from boatland.errors import BoatlandInputError
+from boatland.cli.guard import integer, positive, seed
 
 __all__ = ["add_parser", "cmd"]
 
@@ -22,8 +23,8 @@ def add_parser(sub) -> None:
     run.add_argument("scenario", nargs="?", type=Path, help="scenario file (TOML); see 'boatland scenario schema'")
     run.add_argument("--json", action="store_true", help="print the summary as JSON")
     run.add_argument("-o", "--output", type=Path, help="write the time series, events and summary (HDF5)")
-    run.add_argument("--duration", type=float, help="override simulation.duration [s]")
-    run.add_argument("--seed", type=int, help="override simulation.seed")
+    run.add_argument("--duration", type=positive("s"), help="override simulation.duration [s]")
+    run.add_argument("--seed", type=seed, help="override simulation.seed (0 … 2**63 − 1)")
     run.add_argument("--log", type=Path, metavar="MCAP",
                      help="run log to write (MCAP, written while the trial runs; opens in Foxglove and in Rerun: "
                           "'boatland replay'). Default: <scenario name>.mcap next to -o FILE if given, else in "
@@ -34,43 +35,49 @@ def add_parser(sub) -> None:
                           "the printed URL), 'connect[=URL]' (a viewer already listening; default "
                           "rerun+http://127.0.0.1:9876/proxy), 'spawn' (start a viewer; needs a display). "
                           "Never waits for an absent viewer: that is an error before the run")
+    run.add_argument("--bind", metavar="ADDR", default="127.0.0.1",
+                     help="address the --rerun serve server listens on (default 127.0.0.1: this machine only; "
+                          "0.0.0.0 opens it to the network, without authentication)")
+    run.add_argument("--port", type=integer(1, 65535), default=9876,
+                     help="port of --rerun serve (default 9876)")
+    run.add_argument("--progress-file", type=Path, metavar="FILE",
+                     help="keep the kernel's step counter in FILE while the trial runs (for scripts and tests)")
     run.set_defaults(func=cmd)
 
 
 def cmd(args) -> int:
-    import warnings
-
-    from boatland.scenario_check import default_scenario_path, load_checked
+    from boatland.cli.common import check_memory, load_guarded
     from boatland.trial.simulate import BlowUpError, simulate
 
-    path = args.scenario or default_scenario_path()
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
-        scenario, db, _ = load_checked(path)
-        changes = {}
-        if args.duration is not None:
-            changes["simulation.duration"] = args.duration
-        if args.seed is not None:
-            changes["simulation.seed"] = args.seed
-        if changes:
-            scenario = scenario.replace(changes)
-        if not args.json:
-            print(f"running {scenario.name}: {scenario.simulation.duration:g} s at dt = {scenario.time_step(db):g} s "
-                  f"({scenario.n_steps(db)} steps), {db.name}, radiation {scenario.radiation.method}", file=sys.stderr)
-        sinks, log_path, live = _recording_sinks(args, scenario)
-        try:
-            result = _simulate_with_bar(simulate, scenario, db, show=not args.json, sinks=sinks)
-        except BlowUpError as exc:
-            print(f"boatland: error: {path}: {exc}", file=sys.stderr)
-            if log_path is not None:
-                print(f"wrote {log_path} (up to the blow-up)", file=sys.stderr)
-            return 3
-        finally:
-            for sink in sinks:      # an interrupted run still leaves a valid log of what was done
-                sink.close()
-    for w in caught:
-        if not args.json:
-            print(f"warning: {w.message}", file=sys.stderr)
+    path = args.scenario
+    if args.rerun:
+        from boatland.record.rerun_log import parse_target
+
+        parse_target(args.rerun, bind=args.bind, port=args.port)       # a bad spec fails first
+    changes = {k: v for k, v in (("simulation.duration", args.duration), ("simulation.seed", args.seed))
+               if v is not None}
+    scenario, db, warns = load_guarded(path, lambda sc: _outputs(args, sc), changes=changes,
+                                       flags={"simulation.duration": "--duration", "simulation.seed": "--seed"})
+    check_memory(scenario, db, flag="--duration" if args.duration is not None else f"{scenario.source}: "
+                                                                                     "simulation.duration")
+    if not args.json:
+        print(f"running {scenario.name}: {scenario.simulation.duration:g} s at dt = {scenario.time_step(db):g} s "
+              f"({scenario.n_steps(db)} steps), {db.name}, radiation {scenario.radiation.method}", file=sys.stderr)
+    sinks, log_path, live = _recording_sinks(args, scenario)
+    try:
+        result = _simulate_with_bar(simulate, scenario, db, show=not args.json, sinks=sinks,
+                                    progress_file=args.progress_file)
+    except BlowUpError as exc:
+        print(f"boatland: error: {path or scenario.source}: {exc}", file=sys.stderr)
+        if log_path is not None:
+            print(f"wrote {log_path} (up to the blow-up)", file=sys.stderr)
+        return 3
+    finally:
+        for sink in sinks:      # an interrupted run still leaves a valid log of what was done
+            sink.close()
+    if not args.json:
+        for w in warns:
+            print(f"warning: {w}", file=sys.stderr)
     if args.output:
         result.to_hdf5(args.output)
     if args.json:
@@ -90,6 +97,31 @@ def cmd(args) -> int:
     return 0
 
 
+def _log_path(args, scenario) -> Path | None:
+    """The run log: --log, else beside -o, else <scenario name>.mcap here; None with --no-log."""
+    if args.no_log:
+        return None
+    if args.log is not None:
+        return args.log
+    if args.output is not None:
+        return args.output.with_suffix(".mcap")
+    return Path(f"{scenario.name}.mcap")
+
+
+def _outputs(args, scenario) -> list:
+    from boatland.cli.guard import Output
+
+    outs = [Output("-o", args.output)]
+    log = _log_path(args, scenario)
+    if log is not None:
+        outs.append(Output("--log" if args.log is not None else "the run log (--log)", log))
+    if args.rerun and args.rerun.startswith("save="):
+        outs.append(Output("--rerun save=", Path(args.rerun[5:])))
+    if args.progress_file is not None:
+        outs.append(Output("--progress-file", args.progress_file))
+    return outs
+
+
 def _recording_sinks(args, scenario):
     """The run log (MCAP) and the optional Rerun stream of ``boatland run``: (sinks, log path, Rerun sink)."""
     import uuid
@@ -98,36 +130,46 @@ def _recording_sinks(args, scenario):
     from boatland.record.rerun_log import RerunLog
 
     run_id = str(uuid.uuid4())
-    live = RerunLog(args.rerun, recording_id=run_id, quiet=args.json) if args.rerun else None  # checked now
-    sinks, log_path = [], None
-    if not args.no_log:
-        if args.log is not None:
-            log_path = args.log
-        elif args.output is not None:
-            log_path = args.output.with_suffix(".mcap")
-        else:
-            log_path = Path(f"{scenario.name}.mcap")
-        if not log_path.resolve().parent.is_dir():
-            raise BoatlandInputError(f"--log {log_path}: the directory {log_path.parent} does not exist")
+    live = RerunLog(args.rerun, recording_id=run_id, quiet=args.json, bind=args.bind, port=args.port) \
+        if args.rerun else None  # checked now: an absent viewer or a busy port fails before the run
+    sinks, log_path = [], _log_path(args, scenario)
+    if log_path is not None:
         sinks.append(McapLog(log_path, run_id=run_id))
     if live is not None:
         sinks.append(live)
     return sinks, log_path, live
 
 
-def _simulate_with_bar(simulate, scenario, db, *, show: bool, sinks=()):
+def _simulate_with_bar(simulate, scenario, db, *, show: bool, sinks=(), progress_file: Path | None = None):
     """Run one trial with a progress bar on stderr (simulated seconds; hidden when stderr is not a
-    terminal or ``show`` is False), feeding ``sinks`` (run log, Rerun) as it runs."""
-    if not show:
-        return simulate(scenario, db, sinks=sinks)
-    from tqdm import tqdm
+    terminal or ``show`` is False), feeding ``sinks`` (run log, Rerun) as it runs. ``progress_file``:
+    also keep the kernel's step counter in this file (one number, rewritten in place as it grows)."""
+    from contextlib import ExitStack
 
     dt = scenario.time_step(db)
-    with tqdm(total=round(scenario.n_steps(db) * dt, 2), unit="s", unit_scale=False, file=sys.stderr,
-              disable=None, leave=False, desc="simulated", dynamic_ncols=True,
-              bar_format="{desc} {n:.1f}/{total:.1f} s |{bar}| {elapsed}<{remaining}") as bar:
+    with ExitStack() as stack:
+        report = []
+        if progress_file is not None:
+            fd = os.open(progress_file, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o644)
+            stack.callback(os.close, fd)
+            report.append(lambda done, total: os.pwrite(fd, f"{done:>20d}\n".encode(), 0))
+        if show:
+            from tqdm import tqdm
+
+            bar = stack.enter_context(tqdm(
+                total=round(scenario.n_steps(db) * dt, 2), unit="s", unit_scale=False, file=sys.stderr,
+                disable=None, leave=False, desc="simulated", dynamic_ncols=True,
+                bar_format="{desc} {n:.1f}/{total:.1f} s |{bar}| {elapsed}<{remaining}"))
+
+            def to_bar(done, total):
+                bar.n = round(done * dt, 2)
+                bar.refresh()
+            report.append(to_bar)
+        if not report:
+            return simulate(scenario, db, sinks=sinks)
+
         def progress(done, total):
-            bar.n = round(done * dt, 2)
-            bar.refresh()
+            for r in report:
+                r(done, total)
 
         return simulate(scenario, db, progress=progress, sinks=sinks)

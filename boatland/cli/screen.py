@@ -5,7 +5,9 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+from boatland.reproducible import pinned
 from boatland.cli.common import freq_check, freq_load, freq_sea, freq_setup, scenario_argument, screening_options
+from boatland.cli.guard import Output, integer, positive
 from boatland.errors import BoatlandInputError
 
 __all__ = ["add_parser", "cmd"]
@@ -21,21 +23,22 @@ def add_parser(sub) -> None:
                     "figure.")
     scenario_argument(screen)
     screening_options(screen)
-    screen.add_argument("--tp", type=float, nargs=3, metavar=("MIN", "MAX", "N"), default=[3.0, 18.0, 16],
+    screen.add_argument("--tp", type=positive("s", 1e4), nargs=3, metavar=("MIN", "MAX", "N"), default=[3.0, 18.0, 16],
                         help="peak periods: N from MIN to MAX [s] (default 3 18 16)")
-    screen.add_argument("--directions", type=int, default=8, metavar="N",
+    screen.add_argument("--directions", type=integer(1, 3600), default=8, metavar="N",
                         help="N relative directions over 360° (default 8: every 45°)")
     screen.add_argument("-o", "--output", type=Path, metavar="PNG", help="write a polar figure of the limiting Hs")
     screen.set_defaults(func=cmd)
 
 
+@pinned
 def cmd(args) -> int:
     import numpy as np
 
     from boatland.freqdomain import MODES, screening_grid
 
     freq_check(args)
-    scenario, db = freq_load(args.scenario)
+    scenario, db = freq_load(args.scenario, [Output("-o", args.output, "figure")])
     setup = freq_setup(args, scenario, db)
     lo, hi, n = args.tp
     if not (0 < lo <= hi and n >= 1 and n == int(n)):

@@ -24,6 +24,7 @@ from boatland.model.motion import compile_motion
 from boatland.model.radiation import RadiationMemory, default_dt, radiation_memory
 from boatland.model.scenario import Scenario
 from boatland.model.hydrodb import HydroDB
+from boatland.reproducible import pinned
 from boatland.trial.events import extract_events, slip_episodes
 from boatland.trial.result import Result
 from boatland.trial.sink import StepBlock, TrialInfo, TrialSink
@@ -104,6 +105,7 @@ def contact_arrays(scenario: Scenario, db: HydroDB):
     return (np.ascontiguousarray(P, dtype=float), S, N, TH, CF, DF, MU, bool(fender.sideways))
 
 
+@pinned
 def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None = None,
              progress: Callable[[int, int], None] | None = None, sinks: Sequence[TrialSink] = ()) -> Result:
     r"""Run one landing trial.
