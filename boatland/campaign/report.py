@@ -180,7 +180,7 @@ def _figures(data, axes, incident, target, out):
     fig, ax = plt.subplots(figsize=(7, 4.5))
     col = INCIDENT_PREFIX + incident
     for r in stats:
-        t = trials[col][(trials["case"] == r["case"]) & (trials["status"] >= 0)]
+        t = trials[col][(trials["case"] == r["case"]) & (trials["status"] == 0)]
         if not np.isfinite(t).any():
             continue
         ts = np.sort(t[np.isfinite(t)])
