@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 import os
 import sys
+import time
 from pathlib import Path
 
 from boatland.cli.guard import integer, positive, seed
@@ -161,9 +162,13 @@ def _simulate_with_bar(simulate, scenario, db, *, show: bool, sinks=(), progress
                 disable=None, leave=False, desc="simulated", dynamic_ncols=True,
                 bar_format="{desc} {n:.1f}/{total:.1f} s |{bar}| {elapsed}<{remaining}"))
 
+            shown = [0.0]
+
             def to_bar(done, total):
-                bar.n = round(done * dt, 2)
-                bar.refresh()
+                if time.monotonic() - shown[0] >= 0.1:
+                    bar.n = round(done * dt, 2)
+                    bar.refresh()
+                    shown[0] = time.monotonic()
             report.append(to_bar)
         if not report:
             return simulate(scenario, db, sinks=sinks)
@@ -172,4 +177,5 @@ def _simulate_with_bar(simulate, scenario, db, *, show: bool, sinks=(), progress
             for r in report:
                 r(done, total)
 
-        return simulate(scenario, db, progress=progress, sinks=sinks)
+        return simulate(scenario, db, progress=progress, sinks=sinks,
+                        progress_every=0.0 if progress_file is not None else 0.1)

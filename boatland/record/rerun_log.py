@@ -22,7 +22,7 @@ from urllib.parse import urlparse
 import numpy as np
 
 from boatland.errors import BoatlandInputError
-from boatland.record.columns import Columns, LandingTracker, bow_elevation
+from boatland.record.columns import BowElevation, Columns, LandingTracker
 from boatland.record.mcap_log import IncidentWatch, columns_from_block, end_event, step_events
 from boatland.record.scene import PATCH_DT, Scene, scene_from_trial
 
@@ -320,13 +320,11 @@ class RerunLog:
                                                       quiet=self.quiet, bind=self.bind, port=self.port)
         self.view = RerunView(self.rec, scene_from_trial(info.scenario, info.db, info.start_pose, info.contacts), nc)
         self.view.static()
-        self._tracker, self._incidents, self._eta = LandingTracker(nc), IncidentWatch(info.scenario), None
+        self._tracker, self._incidents, self._eta = LandingTracker(nc), IncidentWatch(info.scenario), BowElevation(info)
         self._buf, self._events = [], []
 
     def steps(self, block) -> None:
-        if self._eta is None:
-            self._eta = bow_elevation(self.info)
-        c = columns_from_block(block, self.info, self._tracker, self._eta)
+        c = columns_from_block(block, self.info, self._tracker, self._eta(block.k0, block.k1))
         self._buf.append(Columns(**{k: np.array(v) for k, v in vars(c).items()}))
         self._events += step_events(block, c.t, c.x, c.slip, self._incidents)
         if self._buf[-1].t[-1] - self._buf[0].t[0] >= FLUSH_EVERY:
