@@ -41,7 +41,7 @@ def main(argv: list[str] | None = None) -> int:
     try:
         return int(args.func(args) or 0)
     except BoatlandInputError as exc:
-        _error(str(exc))
+        _error(_one_line(exc))
         return exc.exit_status
     except KeyboardInterrupt:
         print("boatland: interrupted", file=sys.stderr)
@@ -56,6 +56,16 @@ def main(argv: list[str] | None = None) -> int:
         where = f"{exc.filename}: " if exc.filename else ""
         _error(f"{where}{exc.strerror or exc}")
         return 2
+
+
+def _one_line(exc: BoatlandInputError) -> str:
+    """The error as one line: a file's several problems joined with "; " (all of them, at once)."""
+    problems = getattr(exc, "problems", None)
+    if problems and len(problems) > 1:
+        text = f"{exc.source}: {len(problems)} problems: " + "; ".join(f"{k}: {m}" if k else m for k, m in problems)
+    else:
+        text = str(exc)
+    return " ".join(part.strip() for part in text.splitlines() if part.strip())
 
 
 def _error(message: str) -> None:

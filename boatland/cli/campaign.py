@@ -39,7 +39,13 @@ def cmd(args) -> int:
         from boatland.campaign.runner import _check_scheduler_address
 
         _check_scheduler_address(args.scheduler)
-    campaign = load_campaign(args.campaign, load_scenario=load)
+    import warnings
+
+    with warnings.catch_warnings(record=True) as caught:     # shown as one line each once the file is good
+        warnings.simplefilter("always")
+        campaign = load_campaign(args.campaign, load_scenario=load)
+    for w in dict.fromkeys(str(w.message) for w in caught):
+        print(f"warning: {w}", file=sys.stderr)
     store = args.output or Path(f"{campaign.name}.h5")
     side = [store.with_name(store.name + s) for s in (".journal", ".lock", ".series")]
     check_outputs([Output("-o", store), *[Output("-o (its side file)", p) for p in side],
@@ -51,14 +57,22 @@ def cmd(args) -> int:
                  copies=min(workers, campaign.n_trials))
     where = f"Dask scheduler {args.scheduler}" if args.scheduler else \
         f"{args.workers or os.cpu_count()} local worker process(es)"
-    print(f"campaign {campaign.name}: {len(campaign.cases)} cases × {campaign.seeds} seeds = {campaign.n_trials} "
-          f"trials of {campaign.base.simulation.duration:g} s on {where} → {store}", file=sys.stderr)
+    from contextlib import ExitStack
+
     from tqdm import tqdm
 
-    with tqdm(total=campaign.n_trials, unit="trial", file=sys.stderr, disable=None, dynamic_ncols=True) as bar:
+    with ExitStack() as stack:
+        bar = []
+
         def progress(done, total):
-            bar.n = done
-            bar.refresh()
+            if not bar:        # the first call: the store is open (not another campaign's): say what runs
+                print(f"campaign {campaign.name}: {len(campaign.cases)} cases × {campaign.seeds} seeds = "
+                      f"{campaign.n_trials} trials of {campaign.base.simulation.duration:g} s on {where} → {store}"
+                      + (f" ({done} already done)" if done else ""), file=sys.stderr)
+                bar.append(stack.enter_context(tqdm(total=total, unit="trial", file=sys.stderr, disable=None,
+                                                    dynamic_ncols=True)))
+            bar[0].n = done
+            bar[0].refresh()
 
         result = run_campaign(campaign, store, loaders=(load, resolve_database),
                               executor="dask" if args.scheduler else "local", workers=args.workers,

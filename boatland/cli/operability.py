@@ -40,7 +40,10 @@ def cmd(args) -> int:
     setup = freq_setup(args, scenario, db)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", BoatlandWarning)
-        scatter = read_scatter(args.scatter)
+        try:
+            scatter = read_scatter(args.scatter)
+        except UnicodeDecodeError as exc:
+            raise BoatlandInputError(f"{args.scatter}: not a text CSV file (byte {exc.start} is not UTF-8)") from None
     for w in caught:
         print(f"warning: {w.message}", file=sys.stderr)
     sea, _ = freq_sea(scenario)

@@ -61,10 +61,10 @@ def cmd(args) -> int:
                                        flags={"simulation.duration": "--duration", "simulation.seed": "--seed"})
     check_memory(scenario, db, flag="--duration" if args.duration is not None else f"{scenario.source}: "
                                                                                      "simulation.duration")
+    sinks, log_path, live = _recording_sinks(args, scenario)
     if not args.json:
         print(f"running {scenario.name}: {scenario.simulation.duration:g} s at dt = {scenario.time_step(db):g} s "
               f"({scenario.n_steps(db)} steps), {db.name}, radiation {scenario.radiation.method}", file=sys.stderr)
-    sinks, log_path, live = _recording_sinks(args, scenario)
     try:
         result = _simulate_with_bar(simulate, scenario, db, show=not args.json, sinks=sinks,
                                     progress_file=args.progress_file)
