@@ -155,8 +155,13 @@ class Campaign:
     def input_files(self) -> list[Path]:
         """Every file the campaign reads: the campaign file, the base scenario, and the database files and
         measured-wave records of the base and of every case."""
+        import warnings
+
         files = [Path(self.source), Path(self.scenario_path)]
-        for sc in [self.base] + [self.base.replace(dict(c.values)) for c in self.cases if c.values]:
+        with warnings.catch_warnings():      # the cases' warnings are the checks' to tell
+            warnings.simplefilter("ignore")
+            scenarios = [self.base] + [self.base.replace(dict(c.values)) for c in self.cases if c.values]
+        for sc in scenarios:
             if sc.vessel.database_path is not None:
                 files.append(Path(sc.vessel.database_path))
             if sc.sea is not None and sc.sea.kind == "measured":
