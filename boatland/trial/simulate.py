@@ -199,7 +199,9 @@ def _run_watched(arrays, dt: float, n: int, kwargs: dict, progress, sinks, info:
                  progress_every: float = 0.1) -> dict:
     """Run the kernel in a worker thread; meanwhile report its step counter to ``progress`` (every
     ``progress_every`` s) and hand each finished block of about one second of simulated time to the
-    sinks as soon as the counter passes its end (the counter is read every few hundred µs)."""
+    sinks as soon as the counter passes its end (the counter is read every few hundred µs). When the
+    sinks fall behind the kernel, every finished block is handed over in one call (a whole number of
+    blocks) so that they catch up."""
     counter = np.zeros(1, dtype=np.int64)
     live = arrays.allocate_outputs(n, kwargs["contacts"][0].shape[0])
     box: dict = {}
@@ -223,13 +225,13 @@ def _run_watched(arrays, dt: float, n: int, kwargs: dict, progress, sinks, info:
         if progress is not None and time.perf_counter() - shown >= progress_every:
             progress(done, n)
             shown = time.perf_counter()
-        while sinks and done - sent >= block:
-            _send(sinks, live, F, thrust, dt, sent, sent + block)
-            sent += block
+        if sinks and done - sent >= block:   # all finished whole blocks at once: a logger behind catches up
+            k1 = sent + (done - sent) // block * block
+            _send(sinks, live, F, thrust, dt, sent, k1)
+            sent = k1
+            continue
         if not alive:
             break
-        if sinks and done - sent >= block:
-            continue
         worker.join(0.1 if not sinks and progress_every >= 0.1 else 2e-4)
     if "error" in box:
         raise box["error"]
