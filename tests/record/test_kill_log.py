@@ -18,7 +18,7 @@ REPO = Path(__file__).resolve().parents[2]
 #: at the bow is summed per block; a logger behind takes every finished block at once), but the kernel
 #: does not wait for the logger: between two looks at its counter (a few hundred µs) it integrates a few
 #: seconds of a 3600 s run. A loss ≤ one block (1 s) needs a pause point in the kernel
-#: (boatland/integrate/: wait while step > gate[0]) — see ISSUE 14 notes in the campaign of the lead.
+#: (boatland/integrate/: wait while step > gate[0]), which this change leaves to the kernel's owner.
 MAX_LOSS = 5.0
 
 
