@@ -163,6 +163,9 @@ def _check_one(out: Output) -> None:
                                      + ", ".join(f".{f}" for f in sorted(known)))
     parent = p.parent if str(p.parent) else Path(".")
     if not parent.is_dir():
+        anc = next((a for a in parent.parents if a.exists()), None) if not parent.exists() else parent
+        if anc is not None and anc.exists() and not anc.is_dir():
+            raise BoatlandInputError(f"{flag} {p}: {anc} is a file, not a folder")
         raise BoatlandInputError(f"{flag} {p}: the folder {parent} does not exist")
     why = _probe(parent)
     if why:

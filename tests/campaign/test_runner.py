@@ -206,4 +206,5 @@ def test_an_unwritable_store_fails_before_any_trial(reference, tmp_path):
     blocker = tmp_path / "a_file"
     blocker.write_text("not a folder")
     r = run("campaign", camp, "-o", blocker / "store.h5")
-    assert r.returncode == 2 and "cannot write the campaign store here" in r.stderr and "Traceback" not in r.stderr
+    assert r.returncode == 2 and f"-o {blocker / 'store.h5'}: {blocker} is a file, not a folder" in r.stderr
+    assert "Traceback" not in r.stderr and len(r.stderr.strip().splitlines()) == 1
