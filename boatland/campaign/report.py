@@ -46,13 +46,23 @@ def read_store(path: str | Path) -> dict:
             if f.attrs.get("format") != FORMAT:
                 raise BoatlandInputError(f"{path}: not a boatland campaign store")
             header = {k: (v.decode() if isinstance(v, bytes) else v) for k, v in f.attrs.items()}
+            if "trials" not in f or not isinstance(f["trials"], h5py.Dataset):
+                raise BoatlandInputError(f"{path}: a campaign store without trials (nothing has run yet); run "
+                                         "the campaign first")
             trials = f["trials"][()]
             stats = f["stats"][()] if "stats" in f else None
     except OSError as exc:
         raise BoatlandInputError(f"{path}: not a readable HDF5 file ({exc})") from None
     if stats is None:
         raise BoatlandInputError(f"{path}: the campaign has not finished (no statistics yet); run it again to resume")
-    return {"header": header, "trials": trials, "stats": stats, "plan": json.loads(header["plan"])}
+    if trials.size == 0 or stats.size == 0:
+        raise BoatlandInputError(f"{path}: a campaign store without trials; nothing to report")
+    try:
+        plan = json.loads(header["plan"])
+        header["incidents"].split("\n")
+    except (KeyError, ValueError, TypeError, AttributeError):
+        raise BoatlandInputError(f"{path}: a damaged campaign store (its plan or incident list is missing)") from None
+    return {"header": header, "trials": trials, "stats": stats, "plan": plan}
 
 
 def write_report(store: str | Path, out_dir: str | Path, *, incident: str | None = None,

@@ -101,7 +101,17 @@ def inputs(tmp_path_factory):
     (d / "c_unknown.toml").write_text('name = "c"\nscenario = "x.toml"\nseeds = 2\nseedz = 3\n')
     (d / "c_noscen.toml").write_text('name = "c"\nscenario = "nope.toml"\nseeds = 2\n')
     (d / "c_huge.toml").write_text('name = "c"\nscenario = "x.toml"\nseeds = 2\nduration = 1e11\n')
-    (d / "journal.h5.journal").write_text('{"campaign_digest": 1}\n[1, 2]\n\x00\x01garbage\n')
+    import h5py
+    import numpy as np
+
+    with h5py.File(d / "empty_store.h5", "w") as f:
+        f.attrs["format"] = "boatland-campaign-1"
+    with h5py.File(d / "notrials.h5", "w") as f:
+        f.attrs["format"] = "boatland-campaign-1"
+        f.attrs["plan"] = '{"axes": {}}'
+        f.attrs["incidents"] = "first slip"
+        f.create_dataset("trials", data=np.zeros(0, dtype=[("trial", "i8")]))
+        f.create_dataset("stats", data=np.zeros(0, dtype=[("case", "i8")]))
     return d
 
 
@@ -179,6 +189,8 @@ def _cases():
         ("report -o itself", ["report", "store.h5", "-o", "store.h5"], "-o"),
         ("report -o file", ["report", "store.h5", "-o", "afile.txt"], "-o"),
         ("report -o proc", ["report", "store.h5", "-o", f"{P}/rep"], "-o"),
+        ("report store without trials", ["report", "empty_store.h5", "-o", "rep"], "empty_store.h5"),
+        ("report store with 0 trials", ["report", "notrials.h5", "-o", "rep"], "notrials.h5"),
         ("report target 0", ["report", "store.h5", "--target", "0"], "--target"),
         ("report target 1.5", ["report", "store.h5", "--target", "1.5"], "--target"),
         ("report target nan", ["report", "store.h5", "--target", "nan"], "--target"),
