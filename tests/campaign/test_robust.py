@@ -162,3 +162,32 @@ def test_pinning_makes_a_thread_sensitive_computation_reproducible():
             with single_threaded():
                 results.append(np.linalg.svd(H)[2].tobytes())
     assert results[0] == results[1]
+
+
+@pytest.fixture
+def small_disk(tmp_path):
+    """A real 1 MiB filesystem (tmpfs; needs root), nearly full."""
+    mnt = tmp_path / "disk"
+    mnt.mkdir()
+    if subprocess.run(["mount", "-t", "tmpfs", "-o", "size=1m", "tmpfs", str(mnt)], capture_output=True).returncode:
+        pytest.skip("cannot mount a small tmpfs here (needs root)")
+    try:
+        (mnt / "filler").write_bytes(b"\0" * (1024 * 1024 - 40 * 1024))
+        yield mnt
+    finally:
+        subprocess.run(["umount", "-l", str(mnt)], capture_output=True)
+
+
+def test_a_full_disk_stops_the_campaign_with_one_line_and_keeps_what_is_stored(tmp_path, small_disk):
+    camp = long_campaign(tmp_path, "full", seeds=100)
+    store = small_disk / "f.h5"
+    t0 = time.monotonic()
+    r = run("campaign", camp, "-o", store, "--workers", "2")
+    assert r.returncode == 2 and "Traceback" not in r.stderr, r.stderr
+    lines = [ln for ln in r.stderr.splitlines() if ln.startswith("boatland: error:")]
+    assert len(lines) == 1 and str(store) in lines[0] and "run the same command again" in lines[0], r.stderr
+    journal = store.with_name("f.h5.journal")
+    kept = sum(1 for _ in open(journal)) if journal.exists() else 0
+    assert 0 < kept < 200, kept                                # stopped early, what finished is on disk
+    assert not list(small_disk.glob(".f.h5.*.part"))
+    print(f"stopped after {time.monotonic() - t0:.1f} s with {kept} trials in the journal")
