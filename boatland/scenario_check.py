@@ -10,6 +10,10 @@ For the CLI::
     boatland scenario schema       → print(schema_text())
     boatland scenario check FILE   → report = check_file(FILE); print(report.text); exit report.exit_status
     boatland run [FILE]            → scenario, db, check = load_checked(FILE or default_scenario_path())
+
+Beside the model's validation and :meth:`Scenario.check_against`, every load runs the limits of
+:mod:`boatland.model.limits` (values that can only be mistakes): :func:`load` on the parsed document,
+:func:`check_loaded` with the database.
 """
 
 from __future__ import annotations
@@ -24,14 +28,15 @@ from boatland.hydro import read_hydro
 from boatland.hydro.builtin import BUILTIN, load_builtin
 from boatland.model.hydrodb import HydroDB
 from boatland.model.landed import check_memory
+from boatland.model.limits import document_problems, scenario_problems
 from boatland.model.scenario import Scenario, ScenarioWarning, load_scenario
 from boatland.model.scenario_checks import ScenarioCheck
 from boatland.model.scenario_schema import json_schema
 from boatland.model.tomlspec import SpecError
 from boatland.trial.simulate import prepare_memory
 
-__all__ = ["CheckReport", "DEFAULT_SCENARIO", "check_file", "default_scenario_path", "load", "load_checked",
-           "resolve_database", "schema_text"]
+__all__ = ["CheckReport", "DEFAULT_SCENARIO", "check_file", "check_loaded", "default_scenario_path", "load",
+           "load_checked", "resolve_database", "schema_text"]
 
 #: The Quick-start trial ``boatland run`` uses without an argument (in ``scenarios/``).
 DEFAULT_SCENARIO = "ctv_landing.toml"
@@ -57,8 +62,28 @@ def default_scenario_path() -> Path:
 
 
 def load(path: str | Path) -> Scenario:
-    """:func:`load_scenario` knowing the built-in database names (unknown names are problems)."""
-    return load_scenario(path, databases=BUILTIN)
+    """:func:`load_scenario` knowing the built-in database names (unknown names are problems), with the
+    document limits of :func:`boatland.model.limits.document_problems` (non-finite numbers, seed range).
+
+    Raises
+    ------
+    SpecError
+        Every problem of the file with its key path.
+    """
+    from boatland.model.tomlspec import parse_toml_file
+
+    doc = parse_toml_file(path)
+    early = document_problems(doc)
+    if not early:
+        return load_scenario(path, databases=BUILTIN)
+    problems = list(early)
+    try:   # the other problems of the file too, as far as validation gets past these
+        load_scenario(path, databases=BUILTIN)
+    except SpecError as exc:
+        problems += [p for p in exc.problems if p not in problems]
+    except (KeyError, TypeError, ValueError):  # validation tripped over a value refused above
+        pass
+    raise SpecError(str(path), problems)
 
 
 def resolve_database(scenario: Scenario) -> HydroDB:
@@ -92,12 +117,29 @@ def load_checked(path: str | Path) -> tuple[Scenario, HydroDB, ScenarioCheck]:
         Any problem of the file, of its database, or of the two together (all with key paths).
     """
     scenario = load(path)
+    db, check = check_loaded(scenario)
+    return scenario, db, check
+
+
+def check_loaded(scenario: Scenario) -> tuple[HydroDB, ScenarioCheck]:
+    """Read the database of a loaded scenario and run every check against it: what :func:`load_checked`
+    does after :func:`load` (an edge that must look at the scenario first, e.g. to guard its outputs,
+    calls the two itself). Warnings are issued as :class:`ScenarioWarning`.
+
+    Raises
+    ------
+    SpecError
+        Problems of the scenario with its database, and the limits of
+        :func:`boatland.model.limits.scenario_problems`.
+    """
     db = resolve_database(scenario)
     check = scenario.check_against(db)
-    check.raise_if_problems(scenario.source)
+    problems = list(check.problems) + [p for p in scenario_problems(scenario, db) if p not in check.problems]
+    if problems:
+        raise SpecError(scenario.source, problems)
     for key, msg in check.warnings:
         warnings.warn(f"{scenario.source}: {key}: {msg}", ScenarioWarning, stacklevel=2)
-    return scenario, db, check
+    return db, check
 
 
 @dataclass(frozen=True)
@@ -157,6 +199,10 @@ def check_file(path: str | Path) -> CheckReport:
             scenario = load(path)
             db = resolve_database(scenario)
             check = scenario.check_against(db)
+            limits = [p for p in scenario_problems(scenario, db) if p not in check.problems]
+            if limits:
+                check = ScenarioCheck(problems=check.problems + tuple(limits), warnings=check.warnings,
+                                      notes=check.notes)
             if check.ok and db.M is not None:
                 check = _with_memory_check(scenario, db, check)
         except SpecError as exc:

@@ -44,7 +44,7 @@ from boatland.model.scenario import Scenario
 from boatland.model.tomlspec import Key, Problems, SpecError, Table, Vector, parse_toml_file, validate
 from boatland.trial.simulate import exposure_start
 
-__all__ = ["Campaign", "Case", "TrialSpec", "load_campaign", "trial_seed", "CAMPAIGN_SCHEMA"]
+__all__ = ["Campaign", "Case", "TrialSpec", "load_campaign", "trial_seed", "file_sha256", "CAMPAIGN_SCHEMA"]
 
 CAMPAIGN_SCHEMA = Table({
     "name": Key(str, required=True, doc="campaign name"),
@@ -64,6 +64,18 @@ CAMPAIGN_SCHEMA = Table({
         "keep_series": Vector(scalar=True, ge=0.0, doc="trial numbers whose full time series are stored"),
     }, optional=True),
 })
+
+
+def file_sha256(path: str | Path) -> str:
+    """SHA-256 of a file's bytes (hex); "missing" for a file that is not there."""
+    h = hashlib.sha256()
+    try:
+        with open(path, "rb") as fh:
+            for block in iter(lambda: fh.read(1 << 20), b""):
+                h.update(block)
+    except FileNotFoundError:
+        return "missing"
+    return h.hexdigest()
 
 
 def trial_seed(master_seed: int, seed_index: int) -> int:
@@ -150,10 +162,33 @@ class Campaign:
             scenario = scenario.replace({"simulation.duration": exposure_start(scenario) + self.access})
         return scenario
 
+    def input_files(self) -> list[Path]:
+        """Every file the campaign reads: the campaign file, the base scenario, and the database files and
+        measured-wave records of the base and of every case."""
+        import warnings
+
+        files = [Path(self.source), Path(self.scenario_path)]
+        with warnings.catch_warnings():      # the cases' warnings are the checks' to tell
+            warnings.simplefilter("ignore")
+            scenarios = [self.base] + [self.base.replace(dict(c.values)) for c in self.cases if c.values]
+        for sc in scenarios:
+            if sc.vessel.database_path is not None:
+                files.append(Path(sc.vessel.database_path))
+            if sc.sea is not None and sc.sea.kind == "measured":
+                files.append(Path(sc.sea.waves.source))
+        out: list[Path] = []
+        for f in files:
+            if f.resolve() not in [o.resolve() for o in out]:
+                out.append(f)
+        return out
+
     def digest(self) -> str:
-        """SHA-256 of the campaign file's content and of the base scenario's (what a store belongs to)."""
+        """SHA-256 of what a store belongs to: the campaign file's content, the base scenario's, and the
+        contents (SHA-256) of every file they read (:meth:`input_files`: database, measured-wave record) —
+        a resume never mixes results of changed inputs."""
         text = json.dumps(self.document, sort_keys=True, default=str)
-        return hashlib.sha256(f"{text}\n{self.base.digest()}".encode()).hexdigest()
+        files = "\n".join(f"{p.name} {file_sha256(p)}" for p in self.input_files()[2:])
+        return hashlib.sha256(f"{text}\n{self.base.digest()}\n{files}".encode()).hexdigest()
 
 
 def load_campaign(path: str | Path, *, load_scenario) -> Campaign:

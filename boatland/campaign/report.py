@@ -19,11 +19,16 @@ from pathlib import Path
 
 import numpy as np
 
+from boatland.campaign.runner import completed
 from boatland.campaign.stats import limiting_hs
 from boatland.campaign.store import FORMAT, INCIDENT_PREFIX
 from boatland.errors import BoatlandInputError
 
-__all__ = ["read_store", "write_report"]
+__all__ = ["read_store", "write_report", "REPORT_FILES"]
+
+#: Every file :func:`write_report` may write into its folder.
+REPORT_FILES = ("cases.csv", "cases.md", "limiting_hs.csv", "limiting_hs.md", "p_vs_hs.png",
+                "limiting_hs_polar.png", "time_to_incident.png")
 
 HS_KEY = "sea.Hs"
 DIR_KEYS = ("sea.relative_direction_deg", "sea.direction_deg")
@@ -42,13 +47,23 @@ def read_store(path: str | Path) -> dict:
             if f.attrs.get("format") != FORMAT:
                 raise BoatlandInputError(f"{path}: not a boatland campaign store")
             header = {k: (v.decode() if isinstance(v, bytes) else v) for k, v in f.attrs.items()}
+            if "trials" not in f or not isinstance(f["trials"], h5py.Dataset):
+                raise BoatlandInputError(f"{path}: a campaign store without trials (nothing has run yet); run "
+                                         "the campaign first")
             trials = f["trials"][()]
             stats = f["stats"][()] if "stats" in f else None
     except OSError as exc:
         raise BoatlandInputError(f"{path}: not a readable HDF5 file ({exc})") from None
     if stats is None:
         raise BoatlandInputError(f"{path}: the campaign has not finished (no statistics yet); run it again to resume")
-    return {"header": header, "trials": trials, "stats": stats, "plan": json.loads(header["plan"])}
+    if trials.size == 0 or stats.size == 0:
+        raise BoatlandInputError(f"{path}: a campaign store without trials; nothing to report")
+    try:
+        plan = json.loads(header["plan"])
+        header["incidents"].split("\n")
+    except (KeyError, ValueError, TypeError, AttributeError):
+        raise BoatlandInputError(f"{path}: a damaged campaign store (its plan or incident list is missing)") from None
+    return {"header": header, "trials": trials, "stats": stats, "plan": plan}
 
 
 def write_report(store: str | Path, out_dir: str | Path, *, incident: str | None = None,
@@ -176,7 +191,7 @@ def _figures(data, axes, incident, target, out):
     fig, ax = plt.subplots(figsize=(7, 4.5))
     col = INCIDENT_PREFIX + incident
     for r in stats:
-        t = trials[col][(trials["case"] == r["case"]) & (trials["status"] >= 0)]
+        t = trials[col][(trials["case"] == r["case"]) & completed(trials)]
         if not np.isfinite(t).any():
             continue
         ts = np.sort(t[np.isfinite(t)])

@@ -9,12 +9,28 @@ and rows are stored by trial number.
 
 Executors: ``"local"`` — a pool of worker processes (default: one per core; one worker runs in
 this process); ``"dask"`` — a ``distributed`` scheduler at ``scheduler`` (``tcp://host:port``).
+
+Reproducible everywhere: every trial runs with BLAS/LAPACK pinned to one thread
+(:func:`boatland.reproducible.single_threaded`), as Dask workers run by default, so a store is the
+same bit for bit from 1 or N local workers, a Dask cluster, or machines with more cores.
+
+Failed trials (an exception, NaN, a runaway; not a fender that slid off the landing, which is an
+outcome) are stored with their reason and left out of
+every probability; :func:`failures` lists them per case. Before any trial, every case's scenario gets
+the checks ``boatland run`` makes (:func:`check_cases`).
+
+Local workers die with the campaign: each sets ``PR_SET_PDEATHSIG`` (Linux) and watches its parent's
+pid, so neither SIGKILL nor SIGTERM of the campaign leaves workers running; a campaign stopped by an
+error (e.g. the disk is full) cancels the trials still queued.
 """
 
 from __future__ import annotations
 
 import math
 import os
+import signal
+import sys
+import threading
 import time
 import traceback
 import warnings
@@ -27,9 +43,11 @@ from boatland.campaign.plan import Campaign, TrialSpec, load_campaign
 from boatland.campaign.stats import clopper_pearson, exponential_mean_interval
 from boatland.campaign.store import INCIDENT_PREFIX, CampaignStore
 from boatland.errors import BoatlandInputError
+from boatland.integrate.cummins import OUTCOME_STATUSES
+from boatland.reproducible import single_threaded
 from boatland.trial.simulate import exposure_start
 
-__all__ = ["run_campaign", "execute_trial", "incident_names", "case_statistics"]
+__all__ = ["run_campaign", "execute_trial", "incident_names", "case_statistics", "check_cases", "completed", "failures"]
 
 _CACHE: dict = {}   # per worker process: campaign, databases and radiation memories
 
@@ -62,6 +80,8 @@ def execute_trial(source: str, spec: TrialSpec, loaders, keep_dir: str | None = 
 
     wall0 = time.perf_counter()
     row = {"trial": spec.trial, "case": spec.case, "seed_index": spec.seed_index, "seed": spec.seed}
+    pin = single_threaded()
+    pin.__enter__()
     try:
         ctx = _context(source, loaders)
         campaign: Campaign = ctx["campaign"]
@@ -92,8 +112,55 @@ def execute_trial(source: str, spec: TrialSpec, loaders, keep_dir: str | None = 
         last = traceback.extract_tb(exc.__traceback__)[-1] if exc.__traceback__ else None
         where = f" ({Path(last.filename).name}:{last.lineno})" if last else ""
         row.update({"status": -1, "message": f"{type(exc).__name__}: {exc}{where}"[:200]})
+    finally:
+        pin.__exit__(None, None, None)
     row["wall_time"] = time.perf_counter() - wall0
     return row
+
+
+def check_cases(campaign: Campaign, load_database) -> list[str]:
+    """The checks ``boatland run`` makes, for every case's scenario, before any trial: the scenario
+    against its database (:meth:`Scenario.check_against`: dt against the fender contact, the fender on
+    the bow, ...) and the limits of :func:`boatland.model.limits.scenario_problems`.
+
+    Returns the warnings (one line each, naming the case); raises :class:`SpecError` with every problem
+    of every case (key paths prefixed by the case).
+    """
+    from boatland.model.limits import scenario_problems
+    from boatland.model.tomlspec import SpecError
+
+    problems, warns, dbs = [], [], {}
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        for case in campaign.cases:
+            sc = campaign.base.replace(dict(case.values)) if case.values else campaign.base
+            key = str(sc.vessel.database_path or sc.vessel.database)
+            if key not in dbs:
+                dbs[key] = load_database(sc)
+            db = dbs[key]
+            check = sc.check_against(db)
+            where = f"case {case.index} ({case.label() or 'base'})"
+            found = list(check.problems) + [p for p in scenario_problems(sc, db) if p not in check.problems]
+            problems += [(f"{where}: {k}", m) for k, m in found]
+            warns += [f"{where}: {k}: {m}" for k, m in check.warnings]
+    if problems:
+        raise SpecError(campaign.source, problems)
+    return list(dict.fromkeys(warns))
+
+
+def completed(table: np.ndarray) -> np.ndarray:
+    """Rows of trials that ran to an outcome: completed, or ended when the fender slid off the landing
+    (:data:`boatland.integrate.cummins.OUTCOME_STATUSES`); the rest failed (an exception, NaN, a runaway)."""
+    return np.isin(table["status"], OUTCOME_STATUSES) if table.size else np.zeros(0, bool)
+
+
+def failures(campaign: Campaign, table: np.ndarray) -> dict[int, list[tuple[int, str]]]:
+    """Failed trials (not :func:`completed`) per case: case → [(trial, reason)]."""
+    out: dict[int, list[tuple[int, str]]] = {}
+    for r in table[~completed(table)] if table.size else table:
+        msg = r["message"].decode(errors="replace") if isinstance(r["message"], bytes) else str(r["message"])
+        out.setdefault(int(r["case"]), []).append((int(r["trial"]), msg or f"status {int(r['status'])}"))
+    return out
 
 
 def _summary_row(result, t0: float, duration: float, names: list[str]) -> dict:
@@ -151,19 +218,30 @@ def run_campaign(campaign: Campaign, store_path: str | Path, *, loaders, executo
         "campaign_file": Path(campaign.source).read_text(encoding="utf-8"),
         "plan": _plan_json(campaign), "n_trials": campaign.n_trials, "incidents": "\n".join(names),
     }
+    if executor == "dask":
+        _check_scheduler_address(scheduler)
+    check_cases(campaign, loaders[1])
     store = CampaignStore.open(store_path, header, names)
-    todo = [s for s in campaign.trials() if s.trial not in store.done()]
-    total = campaign.n_trials
-    if progress:
-        progress(total - len(todo), total)
-    keep = str(store.series_dir) if campaign.keep_series else None
-    args = (str(Path(campaign.source).resolve()), loaders, keep)
-    for row in _execute(todo, args, executor, workers, scheduler, connect_timeout):
-        store.add(row)
+    try:
+        todo = [s for s in campaign.trials() if s.trial not in store.done()]
+        total = campaign.n_trials
         if progress:
-            progress(len(store.rows), total)
-    p_fd, why = _screening(campaign, loaders)
-    store.finish(case_statistics(campaign, store.table(), names, screening=p_fd, screening_notes=why))
+            progress(total - len(todo), total)
+        keep = str(store.series_dir) if campaign.keep_series else None
+        args = (str(Path(campaign.source).resolve()), loaders, keep)
+        rows = _execute(todo, args, executor, workers, scheduler, connect_timeout)
+        try:
+            for row in rows:
+                store.add(row)
+                if progress:
+                    progress(len(store.rows), total)
+        finally:
+            rows.close()               # an error above cancels the queued trials and stops the workers
+        with single_threaded():
+            p_fd, why = _screening(campaign, loaders)
+        store.finish(case_statistics(campaign, store.table(), names, screening=p_fd, screening_notes=why))
+    finally:
+        store.close()
     return store
 
 
@@ -225,10 +303,65 @@ def _execute(todo, args, executor, workers, scheduler, connect_timeout):
     # fork where there is one (Linux): no re-import per worker and no `if __name__ == "__main__"`
     # guard needed in a user's script; the workers inherit the compiled kernels' cache state
     method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
-    with ProcessPoolExecutor(max_workers=n, mp_context=multiprocessing.get_context(method)) as pool:
+    pool = ProcessPoolExecutor(max_workers=n, mp_context=multiprocessing.get_context(method),
+                               initializer=_worker_init, initargs=(os.getpid(),))
+    futures = []
+    try:
         futures = [pool.submit(execute_trial, source, spec, loaders, keep) for spec in todo]
         for fut in as_completed(futures):
             yield fut.result()
+    except BaseException:          # the consumer stopped (an error, Ctrl-C): cancel, stop the workers now
+        for fut in futures:
+            fut.cancel()
+        procs = list(getattr(pool, "_processes", {}).values())
+        pool.shutdown(wait=False, cancel_futures=True)
+        for p in procs:
+            p.kill()
+        for p in procs:
+            p.join(5.0)
+        raise
+    pool.shutdown(wait=True)
+
+
+def _worker_init(parent: int) -> None:
+    """In each local worker: die with the campaign process, however it ends (SIGKILL included)."""
+    if sys.platform.startswith("linux"):
+        try:
+            import ctypes
+
+            libc = ctypes.CDLL(None, use_errno=True)
+            libc.prctl(1, int(signal.SIGKILL), 0, 0, 0)          # PR_SET_PDEATHSIG
+        except (OSError, AttributeError):
+            pass
+    if os.getppid() != parent:        # the parent died before the line above
+        os._exit(1)
+    threading.Thread(target=_watch_parent, args=(parent,), name="boatland-watch-parent", daemon=True).start()
+
+
+def _watch_parent(parent: int, every: float = 1.0) -> None:
+    """Fallback where PR_SET_PDEATHSIG does not exist: leave when the parent process is gone."""
+    while True:
+        time.sleep(every)
+        if os.getppid() != parent:
+            os._exit(1)
+
+
+def _check_scheduler_address(scheduler: str | None) -> None:
+    """A Dask scheduler address must be ``tcp://host:port`` (or tls/ws/wss/ucx/inproc)."""
+    from urllib.parse import urlparse
+
+    if not scheduler:
+        raise BoatlandInputError("the Dask executor needs a scheduler address (--scheduler tcp://host:port)")
+    try:
+        u = urlparse(scheduler)
+        port = u.port
+    except ValueError:
+        port = None
+        u = None
+    if u is None or u.scheme not in ("tcp", "tls", "ws", "wss", "ucx") or not u.hostname or port is None \
+            or u.path not in ("", "/") or u.query or u.fragment:
+        raise BoatlandInputError(f"--scheduler {scheduler}: not a scheduler address; expected "
+                                 "tcp://HOST:PORT (e.g. tcp://127.0.0.1:8786)")
 
 
 def _execute_dask(todo, args, scheduler, connect_timeout):
@@ -241,7 +374,7 @@ def _execute_dask(todo, args, scheduler, connect_timeout):
         raise BoatlandInputError("the Dask executor needs dask.distributed: pip install 'dask[distributed]'") from None
     try:
         client = Client(scheduler, timeout=connect_timeout, set_as_default=False)
-    except (OSError, TimeoutError) as exc:
+    except (OSError, TimeoutError, ValueError) as exc:
         raise BoatlandInputError(f"--scheduler {scheduler}: no Dask scheduler answered within "
                                  f"{connect_timeout:g} s ({type(exc).__name__}); is it running?") from None
     try:
@@ -265,9 +398,9 @@ def case_statistics(campaign: Campaign, table: np.ndarray, names: list[str], con
                     screening: np.ndarray | None = None, screening_notes: list[str] | None = None) -> np.ndarray:
     """Per case and incident definition: P(incident within the access) with its Clopper–Pearson
     interval and the mean time to the incident with its exponential (χ²) interval; failed trials
-    (status −1) are left out and counted. ``screening``: the frequency-domain P(slip within the
-    access) per case, stored beside them (column ``screening: P(slip)``), and why it is missing where it
-    is (``screening: note``)."""
+    (status an exception, NaN, a runaway) are left out and counted. ``screening``: the frequency-domain P(slip
+    within the access) per case, stored beside them (column ``screening: P(slip)``), and why it is
+    missing where it is (``screening: note``)."""
     cases = campaign.cases
     fields = [("case", "i8"), ("label", "S200"), ("trials", "i8"), ("failed", "i8"), ("screening: P(slip)", "f8"),
               ("screening: note", "S200")]
@@ -279,7 +412,7 @@ def case_statistics(campaign: Campaign, table: np.ndarray, names: list[str], con
     out = np.zeros(len(cases), dtype=fields)
     for i, case in enumerate(cases):
         rows = table[table["case"] == case.index] if table.size else table
-        ok = rows[rows["status"] >= 0] if rows.size else rows
+        ok = rows[completed(rows)] if rows.size else rows
         out[i]["case"] = case.index
         out[i]["label"] = case.label().encode()[:200]
         out[i]["trials"] = len(rows)

@@ -16,7 +16,14 @@ old one (atomic) every few seconds and at the end, after which the journal is em
 killed at any moment leaves the last complete HDF5 file plus a journal whose complete lines hold every
 trial finished since: :meth:`CampaignStore.open` merges both (a trial in both counts once), so a
 resumed campaign neither loses nor repeats a trial. JSON keeps every float exactly (shortest
-round-trip representation), so rows read back from the journal are bit-identical.
+round-trip representation), so rows read back from the journal are bit-identical. A journal line that
+is not a complete row of this campaign (cut by a kill, or damaged) is skipped: that trial runs again.
+
+One writer. :meth:`CampaignStore.open` takes an exclusive advisory lock (``flock``) on
+``results.h5.lock`` beside the store and holds it until :meth:`CampaignStore.close`; a second campaign
+on the same store is refused with the holder's pid. The kernel drops the lock when its holder dies (a
+killed campaign leaves no stale lock: the next one takes it and clears the ``.part`` files an
+interrupted rewrite left). Local filesystems only: ``flock`` over NFS may not exclude.
 """
 
 from __future__ import annotations
@@ -25,16 +32,17 @@ import json
 import math
 import os
 import shutil
+import socket
 import time
 from pathlib import Path
 
 import numpy as np
 
 from boatland import __version__
-from boatland.atomic import atomic_path
+from boatland.atomic import atomic_path, remove_stale_parts
 from boatland.errors import BoatlandInputError
 
-__all__ = ["CampaignStore", "ROW_FIELDS", "FORMAT"]
+__all__ = ["CampaignStore", "StoreLock", "ROW_FIELDS", "FORMAT"]
 
 FORMAT = "boatland-campaign-1"
 
@@ -62,6 +70,55 @@ ROW_FIELDS = (
 INCIDENT_PREFIX = "incident: "
 
 
+class StoreLock:
+    """Exclusive advisory lock of a store: ``flock`` on ``<store>.lock``, holding the holder's pid."""
+
+    def __init__(self, store: Path):
+        self.store = Path(store)
+        self.path = self.store.with_name(self.store.name + ".lock")
+        self.fd: int | None = None
+
+    def acquire(self) -> None:
+        """Take the lock or raise :class:`BoatlandInputError` naming the holder."""
+        try:
+            import fcntl
+        except ImportError:          # not POSIX: no lock (one campaign per store is then the user's care)
+            return
+        while True:
+            try:
+                fd = os.open(self.path, os.O_RDWR | os.O_CREAT | getattr(os, "O_CLOEXEC", 0), 0o644)
+            except OSError as exc:
+                raise BoatlandInputError(f"{self.store}: cannot write the campaign store here "
+                                         f"({exc.strerror or exc})") from None
+            try:
+                fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            except OSError:
+                holder = os.pread(fd, 200, 0).decode(errors="replace").strip() or "unknown"
+                os.close(fd)
+                raise BoatlandInputError(f"{self.store}: another boatland campaign (pid {holder}) is writing this "
+                                         "store; wait for it to finish, or give another -o") from None
+            try:   # the holder before us may have removed the file as it finished: lock the one at the path
+                same = os.fstat(fd).st_ino == os.stat(self.path).st_ino
+            except FileNotFoundError:
+                same = False
+            if same:
+                break
+            os.close(fd)
+        os.ftruncate(fd, 0)
+        os.pwrite(fd, f"{os.getpid()} on {socket.gethostname()}\n".encode(), 0)
+        self.fd = fd
+
+    def release(self) -> None:
+        if self.fd is None:
+            return
+        try:
+            self.path.unlink()
+        except FileNotFoundError:
+            pass
+        os.close(self.fd)        # closing drops the flock
+        self.fd = None
+
+
 def row_dtype(incident_names) -> np.dtype:
     return np.dtype([(n, t) for n, t, _ in ROW_FIELDS] + [(INCIDENT_PREFIX + n, "f8") for n in incident_names])
 
@@ -69,8 +126,10 @@ def row_dtype(incident_names) -> np.dtype:
 class CampaignStore:
     """A store bound to one campaign (by its digest). Use :meth:`open`."""
 
-    def __init__(self, path: Path, header: dict, incident_names: list[str], rows: dict[int, dict]):
+    def __init__(self, path: Path, header: dict, incident_names: list[str], rows: dict[int, dict],
+                 lock: StoreLock | None = None):
         self.path = Path(path)
+        self.lock = lock
         self.header = header
         self.incident_names = list(incident_names)
         self.rows = rows                       # trial → row dict
@@ -86,10 +145,25 @@ class CampaignStore:
         Raises
         ------
         BoatlandInputError
-            The file is not a campaign store, or belongs to a different campaign (never mixed).
+            The file is not a campaign store, belongs to a different campaign (never mixed), or another
+            campaign holds its lock.
         """
         path = Path(path)
         rows: dict[int, dict] = {}
+        if not path.parent.is_dir():
+            raise BoatlandInputError(f"{path}: cannot write the campaign store here (no folder {path.parent})")
+        lock = StoreLock(path)
+        lock.acquire()
+        try:
+            store = cls._open_locked(path, header, incident_names, rows, lock)
+        except BaseException:
+            lock.release()
+            raise
+        return store
+
+    @classmethod
+    def _open_locked(cls, path, header, incident_names, rows, lock) -> "CampaignStore":
+        remove_stale_parts(path)      # left by a rewrite that was killed (only we can be writing now)
         if path.exists():
             import h5py
 
@@ -106,13 +180,16 @@ class CampaignStore:
                                          "choose another output file")
             if digest != header["campaign_digest"]:
                 raise BoatlandInputError(
-                    f"{path}: holds results of a different campaign ({name!r}, or this one edited since); "
+                    f"{path}: holds results of a different campaign ({name!r}, or this one since its campaign file, "
+                    "scenario, database or wave record changed); "
                     "refusing to mix them — use another output file or delete this one")
             if data is not None:
+                if data.dtype.names is None or "trial" not in data.dtype.names:
+                    raise BoatlandInputError(f"{path}: its /trials table is damaged; choose another output file")
                 for rec in data:
                     row = {k: _py(rec[k]) for k in data.dtype.names}
                     rows[row["trial"]] = row
-        store = cls(path, header, incident_names, rows)
+        store = cls(path, header, incident_names, rows, lock)
         store._merge_journal()
         try:  # fail now, before any trial runs, if results cannot be written here
             with open(store.journal, "a", encoding="utf-8"):
@@ -124,16 +201,23 @@ class CampaignStore:
     def _merge_journal(self) -> None:
         if not self.journal.exists():
             return
+        names = {n for n, _, _ in ROW_FIELDS}
+        n_trials = int(self.header.get("n_trials", 0))
         with open(self.journal, "rb") as fh:
             for line in fh:
                 try:
                     rec = json.loads(line)
-                except ValueError:        # a line cut by a kill: that trial runs again
+                except ValueError:        # a line cut by a kill, or damaged: that trial runs again
                     continue
-                if rec.get("campaign_digest") != self.header["campaign_digest"]:
+                if not isinstance(rec, dict) or rec.get("campaign_digest") != self.header["campaign_digest"]:
                     continue
-                row = rec["row"]
-                self.rows.setdefault(int(row["trial"]), row)
+                row = rec.get("row")
+                if not isinstance(row, dict) or not names <= set(row):
+                    continue
+                trial = row["trial"]
+                if not isinstance(trial, int) or isinstance(trial, bool) or not 0 <= trial < max(n_trials, trial + 1):
+                    continue
+                self.rows.setdefault(trial, row)
 
     # ------------------------------------------------------------------ writing
     def add(self, row: dict) -> None:
@@ -156,10 +240,35 @@ class CampaignStore:
                                      "the problem and run the same command again to resume") from None
 
     def write(self, stats: np.ndarray | None = None) -> Path:
-        """Rewrite the HDF5 file atomically from everything known, then empty the journal."""
+        """Rewrite the HDF5 file atomically from everything known, then empty the journal.
+
+        Raises
+        ------
+        BoatlandInputError
+            Not enough free space, or the write failed: the store on disk and the journal are intact
+            (a resume continues from them).
+        """
+        table = self.table()
+        series = sorted(self.series_dir.glob("trial_*.h5")) if self.series_dir.is_dir() else []
+        need = 2 * (table.nbytes + sum(p.stat().st_size for p in series)) + (1 << 20)
+        free = shutil.disk_usage(self.path.parent).free
+        if free < need:
+            raise BoatlandInputError(
+                f"{self.path}: not enough free space to write the store ({free / 1e6:.3g} MB free, about "
+                f"{need / 1e6:.3g} MB needed); the {len(self.rows)} finished trials are kept in {self.journal.name}: "
+                "free space and run the same command again")
+        try:
+            self._write(table, stats, series)
+        except OSError as exc:
+            raise BoatlandInputError(
+                f"{self.path}: writing the store failed ({exc.strerror or exc}); the {len(self.rows)} finished "
+                f"trials are kept in {self.journal.name}: fix that and run the same command again") from None
+        self._last_write = time.monotonic()
+        return self.path
+
+    def _write(self, table, stats, series) -> None:
         import h5py
 
-        table = self.table()
         with atomic_path(self.path) as tmp:
             with h5py.File(tmp, "w") as f:
                 f.attrs["format"] = FORMAT
@@ -170,15 +279,12 @@ class CampaignStore:
                 f["trials"].attrs["columns"] = json.dumps({n: d for n, _, d in ROW_FIELDS})
                 if stats is not None:
                     f.create_dataset("stats", data=stats)
-                if self.series_dir.is_dir():
-                    for src in sorted(self.series_dir.glob("trial_*.h5")):
-                        with h5py.File(src, "r") as s:
-                            s.copy(s["/"], f, name=f"series/{src.stem}")
+                for src in series:
+                    with h5py.File(src, "r") as s:
+                        s.copy(s["/"], f, name=f"series/{src.stem}")
         with open(self.journal, "w", encoding="utf-8") as fh:   # everything is in the HDF5 file now
             fh.flush()
             os.fsync(fh.fileno())
-        self._last_write = time.monotonic()
-        return self.path
 
     def finish(self, stats: np.ndarray | None) -> Path:
         """Final write (with the statistics); removes the journal and the series folder."""
@@ -187,6 +293,11 @@ class CampaignStore:
         if self.series_dir.is_dir():
             shutil.rmtree(self.series_dir)
         return path
+
+    def close(self) -> None:
+        """Release the store's lock (another campaign may then open it)."""
+        if self.lock is not None:
+            self.lock.release()
 
     # ------------------------------------------------------------------ reading
     def table(self) -> np.ndarray:

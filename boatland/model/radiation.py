@@ -15,6 +15,7 @@ import numpy as np
 from boatland.irf.impulse import IRF, IRFSettings, compute_irf
 from boatland.irf.statespace import StateSpace, fit_state_space
 from boatland.model.hydrodb import HydroDB
+from boatland.reproducible import single_threaded
 
 __all__ = ["RadiationMemory", "radiation_memory", "memory_damping", "default_dt", "TARGET_R2", "MAX_ORDER"]
 
@@ -59,8 +60,9 @@ def radiation_memory(db: HydroDB, settings: IRFSettings | None = None, *, fit: b
         settings = IRFSettings(dt=default_dt(db.omega[-1]))
     if settings.length_scale == 1.0 and db.disp_vol > 0:
         settings = dataclasses.replace(settings, length_scale=float(db.disp_vol ** (1 / 3)))
-    irf = compute_irf(db.omega, db.A, db.B, db.A_inf, settings)
-    ss = fit_state_space(irf, db.omega, db.B, target_r2=target_r2, max_order=max_order) if fit else None
+    with single_threaded():   # K (a matrix product) and the fit (LAPACK): the same bits on any core count
+        irf = compute_irf(db.omega, db.A, db.B, db.A_inf, settings)
+        ss = fit_state_space(irf, db.omega, db.B, target_r2=target_r2, max_order=max_order) if fit else None
     return RadiationMemory(irf=irf, state_space=ss)
 
 

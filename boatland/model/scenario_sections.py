@@ -440,7 +440,7 @@ def simulation(ctx: Context, sea_: Sea | None, thr: Thrust | None) -> Simulation
     if sea_ is not None and sea_.kind == "measured" and duration > sea_.waves.length:
         ctx.notes.append(f"the simulation ({duration:g} s) is longer than the wave record ({sea_.waves.length:g} s): "
                          "the replay repeats the record")
-    return Simulation(duration=duration, dt=dt, seed=d["seed"], start_ramp=float(ramp))
+    return Simulation(duration=duration, dt=dt, seed=d.get("seed", 0), start_ramp=float(ramp))
 
 
 def initial(ctx: Context) -> InitialState:

@@ -14,7 +14,7 @@ import numpy as np
 from boatland.trial.events import track_landing
 from boatland.trial.result import TrialSeries
 
-__all__ = ["Columns", "LandingTracker", "settle_row", "world_pose", "bow_elevation"]
+__all__ = ["Columns", "LandingTracker", "settle_row", "world_pose", "bow_elevation", "BowElevation"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -81,21 +81,41 @@ def world_pose(x: np.ndarray, start_pose) -> tuple[np.ndarray, np.ndarray]:
     return tr, q
 
 
-def bow_elevation(info) -> np.ndarray:
-    """Wave elevation [m] (n_steps + 1,) at the bow (mean of the fender points) at rest — with the
+class BowElevation:
+    """Wave elevation [m] at the bow (mean of the fender points) at rest, block by block — with the
     pile's scattered wave when the trial has it (:func:`boatland.record.scene.sea_coefficients`) —
-    ramped in as the excitation is (:func:`boatland.trial.simulate.wave_ramp`); zeros without waves."""
-    from boatland.record.scene import pile_of, sea_coefficients
-    from boatland.trial.simulate import wave_ramp
-    from boatland.waves.synthesis import harmonic_series
+    ramped in as the excitation is (:func:`boatland.trial.simulate.wave_ramp`); zeros without waves.
 
-    n, dt = info.n_steps, info.dt
-    if info.waves is None:
-        return np.zeros(n + 1)
-    P = np.asarray(info.contacts[0]).reshape(-1, 3)
-    bx, by = (P[:, :2].mean(axis=0) if len(P) else np.zeros(2))
-    x0, y0, psi = info.start_pose
-    gx, gy = x0 + np.cos(psi) * bx - np.sin(psi) * by, y0 + np.sin(psi) * bx + np.cos(psi) * by
-    comps = info.waves.realise(info.scenario.simulation.seed, n * dt)
-    coef = sea_coefficients(comps, gx, gy, pile_of(info.scenario, info.db, info.waves))
-    return harmonic_series(comps.omega, coef, 0.0, dt, n + 1)[:, 0] * wave_ramp(info.scenario, dt, n)[::2]
+    The components and their coefficients at the bow are prepared once; ``self(k0, k1)`` sums rows
+    k0 … k1 − 1 only, so a logger writes each block as soon as the kernel has finished it instead of
+    computing the whole run's sea first.
+    """
+
+    def __init__(self, info):
+        from boatland.record.scene import pile_of, sea_coefficients
+        from boatland.trial.simulate import wave_ramp
+
+        self.dt, n = info.dt, info.n_steps
+        self.omega = None
+        if info.waves is None:
+            return
+        P = np.asarray(info.contacts[0]).reshape(-1, 3)
+        bx, by = (P[:, :2].mean(axis=0) if len(P) else np.zeros(2))
+        x0, y0, psi = info.start_pose
+        gx, gy = x0 + np.cos(psi) * bx - np.sin(psi) * by, y0 + np.sin(psi) * bx + np.cos(psi) * by
+        comps = info.waves.realise(info.scenario.simulation.seed, n * self.dt)
+        self.omega = comps.omega
+        self.coef = sea_coefficients(comps, gx, gy, pile_of(info.scenario, info.db, info.waves))
+        self.ramp = wave_ramp(info.scenario, self.dt, n)[::2]
+
+    def __call__(self, k0: int, k1: int) -> np.ndarray:
+        from boatland.waves.synthesis import harmonic_series
+
+        if self.omega is None:
+            return np.zeros(k1 - k0)
+        return harmonic_series(self.omega, self.coef, k0 * self.dt, self.dt, k1 - k0)[:, 0] * self.ramp[k0:k1]
+
+
+def bow_elevation(info) -> np.ndarray:
+    """The whole run's :class:`BowElevation` (n_steps + 1,)."""
+    return BowElevation(info)(0, info.n_steps + 1)

@@ -28,7 +28,7 @@ from mcap.opcode import Opcode
 
 from boatland import __version__
 from boatland.errors import BoatlandInputError
-from boatland.record.columns import Columns, LandingTracker, bow_elevation, settle_row, world_pose
+from boatland.record.columns import BowElevation, Columns, LandingTracker, settle_row, world_pose
 from boatland.trial.events import track_landing
 from boatland.record.scene import scene_metadata
 from boatland.record.schemas import LOG_LEVEL, TOPICS, file_descriptor_set, message_class
@@ -46,11 +46,11 @@ NS = 1_000_000_000
 
 def columns_from_block(block, info, tracker: LandingTracker, eta_bow: np.ndarray) -> Columns:
     """:class:`Columns` of one :class:`~boatland.trial.sink.StepBlock` (``tracker`` carries the landing
-    positions from block to block; ``eta_bow`` is the whole run's bow elevation)."""
+    positions from block to block; ``eta_bow`` is the bow elevation of the block's rows)."""
     tr, q = world_pose(block.x, info.start_pose)
     return Columns(t=np.asarray(block.t), x=block.x, v=block.v, F_exc=block.F_exc, thrust=block.thrust,
                    mode=block.mode, fn=block.fn, ft=block.ft, needed=block.needed, available=block.available,
-                   tpos=block.tpos, slip=tracker(block.mode, block.tpos), eta_bow=eta_bow[block.k0:block.k1],
+                   tpos=block.tpos, slip=tracker(block.mode, block.tpos), eta_bow=eta_bow,
                    translation=tr, quaternion=q)
 
 
@@ -232,7 +232,9 @@ class McapLog:
     -----
     Loss on a crash: each :meth:`steps` call writes its block as complete chunk + indexes and flushes
     the file before returning, so a killed run keeps every block handed over before it was killed
-    (the block being written at that moment, at most about 1 s of simulated time, may be lost).
+    (the block being written at that moment, at most about 1 s of simulated time, may be lost). The
+    sea at the bow is summed per block (:class:`~boatland.record.columns.BowElevation`), so the first
+    block is written as soon as the kernel has finished it.
     """
 
     def __init__(self, path: str | Path, *, compression: str = "lz4", run_id: str = ""):
@@ -260,7 +262,7 @@ class McapLog:
         self._t_range = [None, None]
         nc = np.asarray(info.contacts[0]).reshape(-1, 3).shape[0]
         self._anchor = np.full((nc, 2), np.nan)      # landing positions carried across blocks
-        self._eta = None                 # computed at the first block, while the kernel already runs
+        self._eta = BowElevation(info)   # the sea at the bow, summed block by block
         self._incidents = IncidentWatch(info.scenario)
         self._log_cls = message_class("foxglove.Log")
         b = RecordBuilder()
@@ -283,12 +285,10 @@ class McapLog:
         self._f.flush()
 
     def steps(self, block) -> None:
-        if self._eta is None:
-            self._eta = bow_elevation(self.info)
         slip = np.empty(block.mode.shape)
         worst = track_landing(block.mode, block.tpos, self._anchor, slip, max(0, settle_row(self.info) - block.k0))
         t_ns = np.rint(np.asarray(block.t) * NS).astype(np.int64)
-        rows = self._layout.encode(self._counts["/tf"], t_ns, block, slip, self._eta[block.k0:block.k1],
+        rows = self._layout.encode(self._counts["/tf"], t_ns, block, slip, self._eta(block.k0, block.k1),
                                    self.info.start_pose)
         events = [] if not block.events and not self._incidents.may_fire(worst, block.x) else \
             step_events(block, block.t, block.x, slip, self._incidents)

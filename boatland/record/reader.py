@@ -117,6 +117,12 @@ def read_run_log(path: str | Path) -> RunLog:
         elif isinstance(rec, Footer):
             complete = True
     library = header.library if header is not None else ""
+    if library.startswith("boatland") and "boatland.run" not in meta and not complete:
+        raise BoatlandInputError(f"{path}: a boatland run log cut before its first record was complete "
+                                 f"({path.stat().st_size} bytes; the run was stopped at its start): nothing to recover")
+    if header is None and not complete and error is not None:
+        raise BoatlandInputError(f"{path}: an MCAP file cut in its header ({path.stat().st_size} bytes): "
+                                 "nothing to recover")
     if not library.startswith("boatland") or "boatland.run" not in meta:
         raise BoatlandInputError(f"{path}: an MCAP file, but not a boatland run log (written by "
                                  f"{library or 'an unknown program'!r}; topics: "

@@ -13,7 +13,7 @@ from pathlib import Path
 
 from boatland.record.mcap_log import NS
 from boatland.record.reader import RunLog, read_run_log
-from boatland.record.rerun_log import RerunView, open_stream
+from boatland.record.rerun_log import DEFAULT_BIND, DEFAULT_PORT, RerunView, check_target, open_stream
 from boatland.record.scene import scene_from_metadata
 
 __all__ = ["replay", "Replayed"]
@@ -31,8 +31,11 @@ class Replayed:
     notes: list
 
 
-def replay(path: str | Path, target: str, *, quiet: bool = False) -> Replayed:
+def replay(path: str | Path, target: str, *, quiet: bool = False, bind: str = DEFAULT_BIND,
+           port: int = DEFAULT_PORT) -> Replayed:
     """Send the run log ``path`` to a Rerun ``target`` (``save=PATH``, ``serve``, ``spawn``, ``connect[=URL]``).
+
+    ``bind``, ``port``: where a ``serve`` target listens (default 127.0.0.1:9876).
 
     Returns
     -------
@@ -44,10 +47,12 @@ def replay(path: str | Path, target: str, *, quiet: bool = False) -> Replayed:
     BoatlandInputError
         Not a boatland run log, nothing recoverable, or an unusable target.
     """
+    check_target(target, bind=bind, port=port)     # an unusable target fails before the log is read
     log = read_run_log(path)
     nc = log.columns.mode.shape[1]
     scene = scene_from_metadata(log.metadata)
-    rec, kind, where = open_stream(target, recording_id=log.metadata.get("run_id") or None, n_contacts=nc, quiet=quiet)
+    rec, kind, where = open_stream(target, recording_id=log.metadata.get("run_id") or None, n_contacts=nc, quiet=quiet,
+                                   bind=bind, port=port)
     view = RerunView(rec, scene, nc)
     view.static()
     view.columns(log.columns)

@@ -5,6 +5,10 @@ Targets (``boatland run --rerun TARGET``): ``save=PATH.rrd`` (a file), ``serve``
 process that viewers connect to, late viewers get the whole run), ``connect[=URL]`` (push to a viewer
 already listening; checked before the run), ``spawn`` (start a native viewer; needs a display). None of
 them waits for a viewer that is not there: an absent viewer is an error before the trial starts.
+
+The ``serve`` server listens on 127.0.0.1 (this machine only) unless the caller binds it wider
+(``bind="0.0.0.0"``, with a warning: Rerun's server has no authentication). A port already in use is an
+error before the trial starts (Rerun itself would only log it and serve nothing).
 """
 
 from __future__ import annotations
@@ -18,7 +22,7 @@ from urllib.parse import urlparse
 import numpy as np
 
 from boatland.errors import BoatlandInputError
-from boatland.record.columns import Columns, LandingTracker, bow_elevation, settle_row
+from boatland.record.columns import BowElevation, Columns, LandingTracker, settle_row
 from boatland.record.mcap_log import IncidentWatch, columns_from_block, end_event, step_events
 from boatland.record.scene import PATCH_DT, Scene, scene_from_trial
 
@@ -32,8 +36,13 @@ MODE_COLORS = np.array([[150, 150, 150, 255], [40, 190, 60, 255], [230, 40, 40, 
 FLUSH_EVERY = 30.0     # [s] of simulated time buffered between sends of the live stream
 
 
-def parse_target(spec: str) -> tuple[str, str | None]:
-    """``spawn | serve | connect[=URL] | save=PATH`` → (kind, argument)."""
+DEFAULT_BIND, DEFAULT_PORT = "127.0.0.1", 9876
+
+
+def parse_target(spec: str, *, bind: str = DEFAULT_BIND, port: int = DEFAULT_PORT) -> tuple[str, str | None]:
+    """``spawn | serve | connect[=URL] | save=PATH`` → (kind, argument); ``bind`` and ``port`` (of
+    ``serve``) are checked too."""
+    _check_bind(bind, port)
     kind, _, arg = spec.partition("=")
     if kind in ("spawn", "serve") and not arg:
         return kind, None
@@ -42,6 +51,51 @@ def parse_target(spec: str) -> tuple[str, str | None]:
     if kind == "save" and arg:
         return kind, arg
     raise BoatlandInputError(f"--rerun {spec}: expected spawn, serve, connect[=URL] or save=PATH.rrd")
+
+
+def _check_bind(bind: str, port: int) -> None:
+    try:
+        infos = socket.getaddrinfo(bind, port, type=socket.SOCK_STREAM, flags=socket.AI_NUMERICHOST)
+    except (socket.gaierror, UnicodeError, OverflowError, TypeError):
+        raise BoatlandInputError(f"--bind {bind}: not a numeric IP address (e.g. 127.0.0.1, or 0.0.0.0 for "
+                                 "every interface)") from None
+    if not infos or not 0 < int(port) < 65536:
+        raise BoatlandInputError(f"--port {port}: must lie in 1 … 65535")
+
+
+def check_port_free(bind: str, port: int) -> None:
+    """Refuse a port another process listens on (``--rerun serve``, ``replay --serve``)."""
+    family = socket.AF_INET6 if ":" in bind else socket.AF_INET
+    with socket.socket(family, socket.SOCK_STREAM) as s:
+        s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)   # as the server does: TIME_WAIT is no conflict
+        try:
+            s.bind((bind, port))
+        except OSError as exc:
+            raise BoatlandInputError(f"--port {port}: cannot listen on {bind}:{port} ({exc.strerror or exc}; "
+                                     "another viewer or server?); give another --port") from None
+
+
+def _wait_listening(bind: str, port: int, timeout: float = 5.0) -> bool:
+    import time
+
+    host = "127.0.0.1" if bind in ("0.0.0.0", "") else ("::1" if bind == "::" else bind)
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        try:
+            with socket.create_connection((host, port), timeout=0.5):
+                return True
+        except OSError:
+            time.sleep(0.05)
+    return False
+
+
+def _is_loopback(bind: str) -> bool:
+    import ipaddress
+
+    try:
+        return ipaddress.ip_address(bind).is_loopback
+    except ValueError:
+        return False
 
 
 def _check_viewer(url: str) -> None:
@@ -72,9 +126,10 @@ def blueprint(n_contacts: int = 0):
         collapse_panels=True)
 
 
-def check_target(target: str) -> tuple[str, str | None]:
+def check_target(target: str, *, bind: str = DEFAULT_BIND, port: int = DEFAULT_PORT) -> tuple[str, str | None]:
     """Parse ``target`` and make sure using it cannot hang: a viewer must be listening for ``connect``,
-    a display must exist for ``spawn``, the directory of ``save=PATH`` must exist.
+    a display must exist for ``spawn``, the directory of ``save=PATH`` must exist, the port of ``serve``
+    must be free.
 
     Raises
     ------
@@ -83,7 +138,9 @@ def check_target(target: str) -> tuple[str, str | None]:
     """
     from pathlib import Path
 
-    kind, arg = parse_target(target)
+    kind, arg = parse_target(target, bind=bind, port=port)
+    if kind == "serve":
+        check_port_free(bind, port)
     if kind == "connect":
         _check_viewer(arg)
     if kind == "spawn" and not (os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY")
@@ -95,22 +152,34 @@ def check_target(target: str) -> tuple[str, str | None]:
     return kind, arg
 
 
-def open_stream(target: str, *, recording_id: str | None = None, n_contacts: int = 0, quiet: bool = False):
+def open_stream(target: str, *, recording_id: str | None = None, n_contacts: int = 0, quiet: bool = False,
+                bind: str = DEFAULT_BIND, port: int = DEFAULT_PORT):
     """A RecordingStream sending to ``target`` (checked with :func:`check_target`), with the default layout.
+
+    ``bind``, ``port``: where a ``serve`` target listens (default 127.0.0.1:9876: this machine only).
 
     Returns (stream, kind, uri-or-path)."""
     import rerun as rr
 
-    kind, arg = check_target(target)
+    kind, arg = check_target(target, bind=bind, port=port)
     rec = rr.RecordingStream(APPLICATION_ID, recording_id=recording_id or str(uuid.uuid4()))
     bp = blueprint(n_contacts)
     where = arg
     if kind == "save":
         rec.save(arg, default_blueprint=bp)
     elif kind == "serve":
-        where = rec.serve_grpc(default_blueprint=bp)
+        if not _is_loopback(bind):
+            print(f"warning: rerun: serving on {bind}:{port} without authentication: anyone who can reach this "
+                  "machine can read the run", file=sys.stderr)
+        sink = rr.GrpcServerSink(bind_ip=bind, port=port)
+        rec.set_sinks(sink, default_blueprint=bp)
+        if not _wait_listening(bind, port):
+            rec.disconnect()
+            raise BoatlandInputError(f"--rerun serve: the Rerun server did not start listening on {bind}:{port}")
+        host = "127.0.0.1" if not bind or bind in ("0.0.0.0", "::") or _is_loopback(bind) else bind
+        where = f"rerun+http://{host}:{port}/proxy"
         if not quiet:
-            print(f"rerun: serving the run at {where} (open it with: rerun {where})", file=sys.stderr)
+            print(f"rerun: serving the run on {bind}:{port}: open it with: rerun {where}", file=sys.stderr)
     elif kind == "connect":
         rec.connect_grpc(arg, default_blueprint=bp)
     else:
@@ -239,25 +308,25 @@ class RerunLog:
     ``send_columns``); the viewer target is opened (and checked) in :meth:`start`.
     """
 
-    def __init__(self, target: str, *, recording_id: str | None = None, quiet: bool = False):
-        check_target(target)               # a bad spec or an absent viewer fails before anything runs
-        self.target, self.recording_id, self.quiet = target, recording_id, quiet
+    def __init__(self, target: str, *, recording_id: str | None = None, quiet: bool = False,
+                 bind: str = DEFAULT_BIND, port: int = DEFAULT_PORT):
+        check_target(target, bind=bind, port=port)   # a bad spec, an absent viewer, a busy port: fail now
+        self.target, self.recording_id, self.quiet, self.bind, self.port = target, recording_id, quiet, bind, port
         self.rec, self.kind, self.where, self._closed = None, None, None, False
 
     def start(self, info) -> None:
         self.info = info
         nc = np.asarray(info.contacts[0]).reshape(-1, 3).shape[0]
         self.rec, self.kind, self.where = open_stream(self.target, recording_id=self.recording_id, n_contacts=nc,
-                                                      quiet=self.quiet)
+                                                      quiet=self.quiet, bind=self.bind, port=self.port)
         self.view = RerunView(self.rec, scene_from_trial(info.scenario, info.db, info.start_pose, info.contacts), nc)
         self.view.static()
-        self._tracker, self._incidents, self._eta = LandingTracker(nc, settle_row(info)), IncidentWatch(info.scenario), None
+        self._tracker, self._incidents = LandingTracker(nc, settle_row(info)), IncidentWatch(info.scenario)
+        self._eta = BowElevation(info)
         self._buf, self._events = [], []
 
     def steps(self, block) -> None:
-        if self._eta is None:
-            self._eta = bow_elevation(self.info)
-        c = columns_from_block(block, self.info, self._tracker, self._eta)
+        c = columns_from_block(block, self.info, self._tracker, self._eta(block.k0, block.k1))
         self._buf.append(Columns(**{k: np.array(v) for k, v in vars(c).items()}))
         self._events += step_events(block, c.t, c.x, c.slip, self._incidents)
         if self._buf[-1].t[-1] - self._buf[0].t[0] >= FLUSH_EVERY:

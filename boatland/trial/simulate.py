@@ -28,6 +28,7 @@ from boatland.model.motion import compile_motion
 from boatland.model.radiation import RadiationMemory, default_dt, radiation_memory
 from boatland.model.scenario import Scenario, ScenarioWarning
 from boatland.model.hydrodb import HydroDB
+from boatland.reproducible import pinned
 from boatland.trial.events import extract_events, slip_episodes
 from boatland.trial.result import SERIES, Result
 from boatland.trial.sink import StepBlock, TrialInfo, TrialSink
@@ -128,8 +129,10 @@ def contact_arrays(scenario: Scenario, db: HydroDB) -> Contacts:
                        sideways=fender.sideways)
 
 
+@pinned
 def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None = None,
-             progress: Callable[[int, int], None] | None = None, sinks: Sequence[TrialSink] = ()) -> Result:
+             progress: Callable[[int, int], None] | None = None, sinks: Sequence[TrialSink] = (),
+             progress_every: float = 0.1) -> Result:
     r"""Run one landing trial.
 
     Equation of motion (DESIGN.md §1; Cummins 1962, seed 000 eq. 3.40; contact: seed 001 §2.5, §3.4):
@@ -149,8 +152,9 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
         the caller checks it once with :func:`check_radiation`). Without it the memory is made and
         checked here.
     progress : callable, optional
-        ``progress(steps_done, n_steps)``, called about ten times a second while the kernel runs (it
-        runs in a worker thread with the GIL released) — e.g. to drive a progress bar.
+        ``progress(steps_done, n_steps)``, called every ``progress_every`` seconds while the kernel runs
+        (it runs in a worker thread with the GIL released) — e.g. to drive a progress bar; 0 calls it at
+        every look at the kernel's step counter (each few hundred µs).
     sinks : sequence of TrialSink
         Receive the trial as it runs, in blocks of about one second of simulated time
         (:mod:`boatland.trial.sink`): a logger writes while the kernel integrates.
@@ -201,7 +205,7 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
     else:
         info = TrialInfo(scenario=scenario, db=db, dt=dt, n_steps=n, start_pose=(x0g, y0g, psi), contacts=contacts,
                          waves=waves, provenance=dict(provenance))
-        out = _run_watched(arrays, dt, n, kwargs, progress, sinks, info, F, thrust)
+        out = _run_watched(arrays, dt, n, kwargs, progress, sinks, info, F, thrust, progress_every)
     t = out["t"]
     k = len(t)
     events = extract_events(t, out["mode"], out["needed"], out["available"])
@@ -220,9 +224,13 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
     return result
 
 
-def _run_watched(arrays, dt: float, n: int, kwargs: dict, progress, sinks, info: TrialInfo, F, thrust) -> dict:
-    """Run the kernel in a worker thread; meanwhile report its step counter to ``progress`` (about ten
-    times a second) and hand each finished block of about one second of simulated time to the sinks."""
+def _run_watched(arrays, dt: float, n: int, kwargs: dict, progress, sinks, info: TrialInfo, F, thrust,
+                 progress_every: float = 0.1) -> dict:
+    """Run the kernel in a worker thread; meanwhile report its step counter to ``progress`` (every
+    ``progress_every`` s) and hand each finished block of about one second of simulated time to the
+    sinks as soon as the counter passes its end (the counter is read every few hundred µs). When the
+    sinks fall behind the kernel, every finished block is handed over in one call (a whole number of
+    blocks) so that they catch up."""
     counter = np.zeros(1, dtype=np.int64)
     live = arrays.allocate_outputs(n, kwargs["contacts"][0].shape[0])
     box: dict = {}
@@ -243,15 +251,17 @@ def _run_watched(arrays, dt: float, n: int, kwargs: dict, progress, sinks, info:
     while True:
         alive = worker.is_alive()
         done = int(counter[0])     # rows below the count are final
-        while sinks and done - sent >= block:
-            _send(sinks, live, F, thrust, dt, sent, sent + block)
-            sent += block
-        if progress is not None and time.perf_counter() - shown >= 0.1:
+        if progress is not None and time.perf_counter() - shown >= progress_every:
             progress(done, n)
             shown = time.perf_counter()
+        if sinks and done - sent >= block:   # all finished whole blocks at once: a logger behind catches up
+            k1 = sent + (done - sent) // block * block
+            _send(sinks, live, F, thrust, dt, sent, k1)
+            sent = k1
+            continue
         if not alive:
             break
-        worker.join(0.1 if not sinks else 0.005)
+        worker.join(0.1 if not sinks and progress_every >= 0.1 else 2e-4)
     if "error" in box:
         raise box["error"]
     out = box["out"]

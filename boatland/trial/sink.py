@@ -5,8 +5,8 @@ while it runs, hands every finished block of steps to its sinks — so a logger 
 goes (a killed run keeps what was written) and its cost overlaps the integration on another core.
 
 A sink gets, in order: :meth:`TrialSink.start` once with :class:`TrialInfo`; :meth:`TrialSink.steps`
-with consecutive :class:`StepBlock` s covering every step (about one second of simulated time each,
-the last one shorter); :meth:`TrialSink.finish` once with the :class:`~boatland.trial.result.Result`
+with consecutive :class:`StepBlock` s covering every step (a whole number of blocks of about one second
+of simulated time each — more than one when the sink is behind the kernel — the last one shorter); :meth:`TrialSink.finish` once with the :class:`~boatland.trial.result.Result`
 (also when the integration stopped early: ``result.status != 0``). If the trial fails before the
 kernel starts, nothing is called; if a sink raises, the trial stops with that error.
 """

@@ -78,7 +78,7 @@ def test_bad_input_is_one_line_exit_2(tmp_path, capsys, command, kind):
     assert main([command, str(path)]) == 2
     err = capsys.readouterr().err.strip()
     assert err.startswith(f"boatland: error: {path}") and "\n" not in err and "Traceback" not in err
-    expected = {"text": "not an MCAP file", "foreign": "not a boatland run log", "empty": "not a boatland run log",
+    expected = {"text": "not an MCAP file", "foreign": "not a boatland run log", "empty": "nothing to recover",
                 "missing": "cannot read"}[kind]
     assert expected in err
 

@@ -1,0 +1,97 @@
+"""``boatland campaign``: a Monte Carlo slip-probability campaign into a resumable store."""
+
+from __future__ import annotations
+
+import os
+import sys
+from pathlib import Path
+
+from boatland.cli.guard import Output, check_outputs, integer
+
+__all__ = ["add_parser", "cmd"]
+
+
+def add_parser(sub) -> None:
+    camp = sub.add_parser(
+        "campaign", help="Monte Carlo slip-probability campaign: many trials over a sweep, into a resumable store",
+        description="Run every trial of a campaign file (a base scenario, axes to sweep, N seeds per case) on "
+                    "local worker processes or a Dask cluster. Results go to an HDF5 store as they arrive; "
+                    "running the same command again resumes where it stopped (no trial lost or run twice). "
+                    "Example: boatland campaign scenarios/campaigns/demo.toml")
+    camp.add_argument("campaign", type=Path, help="campaign file (TOML); see scenarios/campaigns/")
+    camp.add_argument("-o", "--output", type=Path, help="store (HDF5; default: <campaign name>.h5 here)")
+    camp.add_argument("--workers", type=integer(1, 4096), help="local worker processes (default: all cores)")
+    camp.add_argument("--scheduler", metavar="URL", help="run on a Dask scheduler (tcp://host:port) instead")
+    camp.add_argument("--report", type=Path, metavar="DIR", help="also write the report into DIR at the end")
+    camp.add_argument("--allow-failures", action="store_true",
+                      help="exit 0 even when trials failed (they are always reported and left out of the statistics)")
+    camp.set_defaults(func=cmd)
+
+
+def cmd(args) -> int:
+    from boatland.campaign import load_campaign, run_campaign
+    from boatland.campaign.report import REPORT_FILES, write_report
+    from boatland.campaign.runner import check_cases, failures
+    from boatland.cli.common import check_memory
+    from boatland.scenario_check import load, resolve_database
+
+    if args.scheduler:
+        from boatland.campaign.runner import _check_scheduler_address
+
+        _check_scheduler_address(args.scheduler)
+    import warnings
+
+    with warnings.catch_warnings(record=True) as caught:     # shown as one line each once the file is good
+        warnings.simplefilter("always")
+        campaign = load_campaign(args.campaign, load_scenario=load)
+    for w in dict.fromkeys(str(w.message) for w in caught):
+        print(f"warning: {w}", file=sys.stderr)
+    store = args.output or Path(f"{campaign.name}.h5")
+    side = [store.with_name(store.name + s) for s in (".journal", ".lock", ".series")]
+    check_outputs([Output("-o", store), *[Output("-o (its side file)", p) for p in side],
+                   Output("--report", args.report, "folder", REPORT_FILES)], campaign.input_files())
+    for w in check_cases(campaign, resolve_database):
+        print(f"warning: {w}", file=sys.stderr)
+    workers = 1 if args.scheduler else (args.workers or os.cpu_count() or 1)
+    check_memory(campaign.base, resolve_database(campaign.base), flag=f"{args.campaign}: duration",
+                 copies=min(workers, campaign.n_trials))
+    where = f"Dask scheduler {args.scheduler}" if args.scheduler else \
+        f"{args.workers or os.cpu_count()} local worker process(es)"
+    from contextlib import ExitStack
+
+    from tqdm import tqdm
+
+    with ExitStack() as stack:
+        bar = []
+
+        def progress(done, total):
+            if not bar:        # the first call: the store is open (not another campaign's): say what runs
+                print(f"campaign {campaign.name}: {len(campaign.cases)} cases × {campaign.seeds} seeds = "
+                      f"{campaign.n_trials} trials of {campaign.base.simulation.duration:g} s on {where} → {store}"
+                      + (f" ({done} already done)" if done else ""), file=sys.stderr)
+                bar.append(stack.enter_context(tqdm(total=total, unit="trial", file=sys.stderr, disable=None,
+                                                    dynamic_ncols=True)))
+            bar[0].n = done
+            bar[0].refresh()
+
+        result = run_campaign(campaign, store, loaders=(load, resolve_database),
+                              executor="dask" if args.scheduler else "local", workers=args.workers,
+                              scheduler=args.scheduler, progress=progress)
+    table = result.table()
+    failed = failures(campaign, table)
+    n_failed = sum(len(v) for v in failed.values())
+    print(f"wrote {store}: {len(table)} trials" + (f", {n_failed} failed (left out of every probability)"
+                                                   if n_failed else ""))
+    for case, rows in sorted(failed.items()):
+        label = campaign.cases[case].label() or "base"
+        print(f"  case {case} ({label}): {len(rows)} of {campaign.seeds} trials failed: "
+              + "; ".join(f"trial {t}: {why}" for t, why in rows[:3]) + (" …" if len(rows) > 3 else ""),
+              file=sys.stderr)
+    if args.report:
+        files = write_report(store, args.report)
+        print(f"wrote {len(files)} report files to {args.report}")
+    if n_failed and not args.allow_failures:
+        print(f"boatland: error: {n_failed} of {len(table)} trials failed (see above; --allow-failures to accept "
+              "them)", file=sys.stderr)
+        return 1
+    return 0

@@ -1,0 +1,192 @@
+"""What several commands share: the default vessel, reading a database or a scenario for a command,
+the frequency-domain commands' options and loading."""
+
+from __future__ import annotations
+
+import os
+import sys
+from pathlib import Path
+
+from boatland.cli.guard import in_range, positive
+from boatland.errors import BoatlandInputError
+
+__all__ = ["DEFAULT_VESSEL", "resolve_db", "scenario_argument", "screening_options", "freq_load", "freq_sea",
+           "freq_check", "freq_setup", "scenario_inputs", "load_guarded", "with_overrides", "check_memory",
+           "available_memory"]
+
+DEFAULT_VESSEL = "ctv24"
+
+
+def resolve_db(spec: str):
+    """A database from a path (any supported format) or a built-in vessel name."""
+    from boatland.hydro import read_hydro
+
+    path = Path(spec)
+    if path.exists():
+        return read_hydro(path)[0]
+    from boatland.hydro.builtin import BUILTIN, load_builtin
+
+    if spec in BUILTIN:
+        return load_builtin(spec)
+    raise BoatlandInputError(f"{spec}: no such file, and not a built-in vessel "
+                             f"(built-in: {', '.join(sorted(BUILTIN))})")
+
+
+def scenario_inputs(scenario) -> list[Path]:
+    """The files a loaded scenario reads: itself, its database file, its measured-wave record."""
+    files = []
+    if scenario.source and not str(scenario.source).startswith("<"):
+        files.append(Path(scenario.source))
+    if scenario.vessel.database_path is not None:
+        files.append(Path(scenario.vessel.database_path))
+    sea = scenario.sea
+    if sea is not None and sea.kind == "measured":
+        files.append(Path(sea.waves.source))
+    return files
+
+
+def with_overrides(scenario, changes: dict, flags: dict):
+    """``scenario.replace(changes)``; a refused value is named by its flag (``flags``: key path → flag),
+    not blamed on the file."""
+    from boatland.model.tomlspec import SpecError
+
+    if not changes:
+        return scenario
+    try:
+        return scenario.replace(changes)
+    except SpecError as exc:
+        given = ", ".join(f"{flags[k]} {v:g}" if isinstance(v, float) else f"{flags[k]} {v}" for k, v in changes.items())
+        why = "; ".join(f"{k}: {m}" if k else m for k, m in exc.problems)
+        raise BoatlandInputError(f"{given}: {why}") from None
+
+
+def load_guarded(path, outputs, extra_inputs=(), changes=None, flags=None):
+    """Load a scenario for a command: parse and validate it, apply the flags' ``changes``, check the
+    outputs against every file it reads (before anything heavy), then read its database and run every
+    check (:func:`boatland.scenario_check.check_loaded`). Warnings are returned, not printed.
+
+    ``outputs`` is a list of :class:`boatland.cli.guard.Output` or a callable ``outputs(scenario)``.
+    Returns (scenario, db, warnings).
+    """
+    import warnings
+
+    from boatland.cli.guard import check_outputs
+    from boatland.scenario_check import check_loaded, default_scenario_path, load
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        scenario = load(path or default_scenario_path())
+        scenario = with_overrides(scenario, changes or {}, flags or {})
+        outs = outputs(scenario) if callable(outputs) else outputs
+        check_outputs(outs, [*scenario_inputs(scenario), *extra_inputs])
+        db, _ = check_loaded(scenario)
+    return scenario, db, [str(w.message) for w in caught]
+
+
+def available_memory() -> int:
+    """Memory [bytes] this process can still use (MemAvailable, else physical memory)."""
+    try:
+        with open("/proc/meminfo", encoding="ascii") as fh:
+            for line in fh:
+                if line.startswith("MemAvailable:"):
+                    return int(line.split()[1]) * 1024
+    except OSError:
+        pass
+    try:
+        return int(os.sysconf("SC_PHYS_PAGES") * os.sysconf("SC_PAGE_SIZE"))
+    except (ValueError, OSError, AttributeError):
+        return 1 << 62
+
+
+def check_memory(scenario, db, *, flag: str = "simulation.duration", copies: int = 1) -> None:
+    """Refuse a run whose time series cannot fit in memory (``copies`` trials at once), saying how to
+    split it."""
+    from boatland.model.limits import run_bytes
+
+    n = scenario.n_steps(db)
+    nc = len(scenario.fender.points) if scenario.fender is not None else 0
+    need = run_bytes(n, nc) * copies
+    have = int(0.8 * available_memory())
+    if need > have:
+        dt = scenario.time_step(db)
+        fit = max(1.0, (have / copies) / run_bytes(1, nc) * dt)
+        raise BoatlandInputError(
+            f"{flag} {scenario.simulation.duration:g} s: {n} steps of dt = {dt:g} s need about "
+            f"{need / 1e9:.3g} GB{f' for {copies} trials at once' if copies > 1 else ''}, more than the "
+            f"{have / 1e9:.3g} GB available; split it into runs of at most {fit:.0f} s (other seeds)"
+            + (" or use fewer --workers" if copies > 1 else ""))
+
+
+def scenario_argument(cmd, optional: bool = True) -> None:
+    """The positional scenario file of ``rao``, ``screen`` and ``operability``."""
+    if optional:
+        cmd.add_argument("scenario", nargs="?", type=Path,
+                         help="scenario file (TOML; default: scenarios/ctv_landing.toml)")
+    else:
+        cmd.add_argument("scenario", type=Path, help="scenario file (TOML)")
+
+
+def screening_options(cmd) -> None:
+    """The options ``screen`` and ``operability`` share."""
+    cmd.add_argument("--accept", default="best", metavar="P",
+                     help="accepted probability of an incident per access, in (0, 1), or a preset of seed 002 "
+                          "Table 2.1: best (0.00119), conservative (0.00002), non-conservative (0.02681); "
+                          "default best")
+    cmd.add_argument("--statistics", choices=("rayleigh", "rice", "vanmarcke"), default="rayleigh",
+                     help="Rayleigh peaks, one per Tp (seed 002), or Rice up-crossing rates (optionally with "
+                          "Vanmarcke's clumping correction); default rayleigh")
+    cmd.add_argument("--method", choices=("improved", "wu"), default="improved",
+                     help="hinge model: improved = thrust follows the vessel, fender spring normal (seed 002 "
+                          "§3.4); wu = rigid hinge, thrust only a static normal force (§3.2.1); default improved")
+    cmd.add_argument("--mu", type=in_range(0.0, 5.0), help="friction coefficient μ (default fender.mu_s)")
+    cmd.add_argument("--thrust", type=positive("N"), help="bollard push F_b [N] (default thrust.force)")
+    cmd.add_argument("--roll-limit", type=in_range(0.0, 90.0, unit="°"), metavar="DEG",
+                     help="roll limit θ_max [deg] (default the largest incidents.roll_limit_deg, else 10)")
+    cmd.add_argument("--access", type=positive("s", 1e7), default=1800.0, metavar="S",
+                     help="duration of one access t_acc [s] (default 1800)")
+    cmd.add_argument("--json", action="store_true", help="print the results as JSON")
+
+
+def freq_load(path, outputs=()):
+    """Scenario and database for the frequency-domain commands, ``outputs`` guarded (warnings printed)."""
+    scenario, db, warns = load_guarded(path, outputs)
+    for w in warns:
+        print(f"warning: {w}", file=sys.stderr)
+    return scenario, db
+
+
+def freq_sea(scenario):
+    """(spectral shape, relative direction [deg] or None) of the scenario's sea."""
+    waves = scenario.sea.waves if scenario.sea is not None else None
+    parts = getattr(waves, "parts", None)
+    if not parts:
+        direction = getattr(waves, "direction_deg", None)
+        return None, None if direction is None else (direction - scenario.vessel.heading_deg) % 360
+    return parts[0], (parts[0].direction_deg - scenario.vessel.heading_deg) % 360
+
+
+def freq_directions(scenario, db, beta, key: str) -> None:
+    """Refuse relative directions the database does not cover, naming the option (``key``) that gave them."""
+    import numpy as np
+
+    from boatland.model.wave_directions import direction_problem
+
+    problem = direction_problem(db, np.atleast_1d(beta), name=repr(scenario.vessel.database or db.name))
+    if problem:
+        raise BoatlandInputError(f"{key}: {problem}")
+
+
+def freq_check(args) -> None:
+    """Refuse bad screening options before loading anything."""
+    from boatland.freqdomain import accept_probability
+
+    try:
+        accept_probability(args.accept)
+    except BoatlandInputError as exc:
+        raise BoatlandInputError(f"--accept {args.accept}: {exc}") from None
+
+
+def freq_setup(args, scenario, db):
+    from boatland.freqdomain import LandingSetup
+
+    return LandingSetup.from_scenario(scenario, db, roll_limit_deg=args.roll_limit)

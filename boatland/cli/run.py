@@ -1,0 +1,181 @@
+"""``boatland run``: one landing trial from a scenario file, with its run log and optional Rerun stream."""
+
+from __future__ import annotations
+
+import json
+import os
+import sys
+import time
+from pathlib import Path
+
+from boatland.cli.guard import integer, positive, seed
+
+__all__ = ["add_parser", "cmd"]
+
+
+def add_parser(sub) -> None:
+    run = sub.add_parser(
+        "run", help="run one landing trial from a scenario file (default: the built-in CTV trial)",
+        description="Run one landing trial: the vessel pushing its bow fender against the boat landing in "
+                    "the scenario's sea, RK4 Cummins integration with stick–slip fender contact. Prints a "
+                    "summary: slip events, time to first slip, slip distance, normal forces, motions, "
+                    "incidents. Without a file: scenarios/ctv_landing.toml (24 m CTV, JONSWAP Hs 1.5 m, "
+                    "80 kN).")
+    run.add_argument("scenario", nargs="?", type=Path, help="scenario file (TOML); see 'boatland scenario schema'")
+    run.add_argument("--json", action="store_true", help="print the summary as JSON")
+    run.add_argument("-o", "--output", type=Path, help="write the time series, events and summary (HDF5)")
+    run.add_argument("--duration", type=positive("s"), help="override simulation.duration [s]")
+    run.add_argument("--seed", type=seed, help="override simulation.seed (0 … 2**63 − 1)")
+    run.add_argument("--log", type=Path, metavar="MCAP",
+                     help="run log to write (MCAP, written while the trial runs; opens in Foxglove and in Rerun: "
+                          "'boatland replay'). Default: <scenario name>.mcap next to -o FILE if given, else in "
+                          "the current directory")
+    run.add_argument("--no-log", action="store_true", help="write no run log")
+    run.add_argument("--rerun", metavar="TARGET",
+                     help="also stream the run to Rerun: 'save=PATH.rrd' (a file), 'serve' (viewers connect to "
+                          "the printed URL), 'connect[=URL]' (a viewer already listening; default "
+                          "rerun+http://127.0.0.1:9876/proxy), 'spawn' (start a viewer; needs a display). "
+                          "Never waits for an absent viewer: that is an error before the run")
+    run.add_argument("--bind", metavar="ADDR", default="127.0.0.1",
+                     help="address the --rerun serve server listens on (default 127.0.0.1: this machine only; "
+                          "0.0.0.0 opens it to the network, without authentication)")
+    run.add_argument("--port", type=integer(1, 65535), default=9876,
+                     help="port of --rerun serve (default 9876)")
+    run.add_argument("--progress-file", type=Path, metavar="FILE",
+                     help="keep the kernel's step counter in FILE while the trial runs (for scripts and tests)")
+    run.set_defaults(func=cmd)
+
+
+def cmd(args) -> int:
+    from boatland.cli.common import check_memory, load_guarded
+    from boatland.trial.simulate import BlowUpError, simulate
+
+    path = args.scenario
+    if args.rerun:
+        from boatland.record.rerun_log import parse_target
+
+        parse_target(args.rerun, bind=args.bind, port=args.port)       # a bad spec fails first
+    changes = {k: v for k, v in (("simulation.duration", args.duration), ("simulation.seed", args.seed))
+               if v is not None}
+    scenario, db, warns = load_guarded(path, lambda sc: _outputs(args, sc), changes=changes,
+                                       flags={"simulation.duration": "--duration", "simulation.seed": "--seed"})
+    check_memory(scenario, db, flag="--duration" if args.duration is not None else f"{scenario.source}: "
+                                                                                     "simulation.duration")
+    sinks, log_path, live = _recording_sinks(args, scenario)
+    if not args.json:
+        print(f"running {scenario.name}: {scenario.simulation.duration:g} s at dt = {scenario.time_step(db):g} s "
+              f"({scenario.n_steps(db)} steps), {db.name}, radiation {scenario.radiation.method}", file=sys.stderr)
+    try:
+        result = _simulate_with_bar(simulate, scenario, db, show=not args.json, sinks=sinks,
+                                    progress_file=args.progress_file)
+    except BlowUpError as exc:
+        print(f"boatland: error: {path or scenario.source}: {exc}", file=sys.stderr)
+        if log_path is not None:
+            print(f"wrote {log_path} (up to the blow-up)", file=sys.stderr)
+        return 3
+    finally:
+        for sink in sinks:      # an interrupted run still leaves a valid log of what was done
+            sink.close()
+    if not args.json:
+        for w in warns:
+            print(f"warning: {w}", file=sys.stderr)
+    if args.output:
+        result.to_hdf5(args.output)
+    if args.json:
+        print(json.dumps(result.summary(), indent=2, default=float))
+    else:
+        print(result.summary_text())
+        if args.output:
+            print(f"wrote {args.output}")
+        if log_path is not None:
+            print(f"wrote {log_path} (run log; 'boatland replay {log_path}' for Rerun, 'boatland plot' for a figure)")
+    if live is not None and live.kind == "save":
+        print(f"wrote {live.where} (open it with 'rerun {live.where}')", file=sys.stderr if args.json else sys.stdout)
+    if live is not None and live.kind == "serve":
+        from boatland.record.rerun_log import serve_until_interrupted
+
+        serve_until_interrupted(live.where)
+    return 0
+
+
+def _log_path(args, scenario) -> Path | None:
+    """The run log: --log, else beside -o, else <scenario name>.mcap here; None with --no-log."""
+    if args.no_log:
+        return None
+    if args.log is not None:
+        return args.log
+    if args.output is not None:
+        return args.output.with_suffix(".mcap")
+    return Path(f"{scenario.name}.mcap")
+
+
+def _outputs(args, scenario) -> list:
+    from boatland.cli.guard import Output
+
+    outs = [Output("-o", args.output)]
+    log = _log_path(args, scenario)
+    if log is not None:
+        outs.append(Output("--log" if args.log is not None else "the run log (--log)", log))
+    if args.rerun and args.rerun.startswith("save="):
+        outs.append(Output("--rerun save=", Path(args.rerun[5:])))
+    if args.progress_file is not None:
+        outs.append(Output("--progress-file", args.progress_file))
+    return outs
+
+
+def _recording_sinks(args, scenario):
+    """The run log (MCAP) and the optional Rerun stream of ``boatland run``: (sinks, log path, Rerun sink)."""
+    import uuid
+
+    from boatland.record.mcap_log import McapLog
+    from boatland.record.rerun_log import RerunLog
+
+    run_id = str(uuid.uuid4())
+    live = RerunLog(args.rerun, recording_id=run_id, quiet=args.json, bind=args.bind, port=args.port) \
+        if args.rerun else None  # checked now: an absent viewer or a busy port fails before the run
+    sinks, log_path = [], _log_path(args, scenario)
+    if log_path is not None:
+        sinks.append(McapLog(log_path, run_id=run_id))
+    if live is not None:
+        sinks.append(live)
+    return sinks, log_path, live
+
+
+def _simulate_with_bar(simulate, scenario, db, *, show: bool, sinks=(), progress_file: Path | None = None):
+    """Run one trial with a progress bar on stderr (simulated seconds; hidden when stderr is not a
+    terminal or ``show`` is False), feeding ``sinks`` (run log, Rerun) as it runs. ``progress_file``:
+    also keep the kernel's step counter in this file (one number, rewritten in place as it grows)."""
+    from contextlib import ExitStack
+
+    dt = scenario.time_step(db)
+    with ExitStack() as stack:
+        report = []
+        if progress_file is not None:
+            fd = os.open(progress_file, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o644)
+            stack.callback(os.close, fd)
+            report.append(lambda done, total: os.pwrite(fd, f"{done:>20d}\n".encode(), 0))
+        if show:
+            from tqdm import tqdm
+
+            bar = stack.enter_context(tqdm(
+                total=round(scenario.n_steps(db) * dt, 2), unit="s", unit_scale=False, file=sys.stderr,
+                disable=None, leave=False, desc="simulated", dynamic_ncols=True,
+                bar_format="{desc} {n:.1f}/{total:.1f} s |{bar}| {elapsed}<{remaining}"))
+
+            shown = [0.0]
+
+            def to_bar(done, total):
+                if time.monotonic() - shown[0] >= 0.1:
+                    bar.n = round(done * dt, 2)
+                    bar.refresh()
+                    shown[0] = time.monotonic()
+            report.append(to_bar)
+        if not report:
+            return simulate(scenario, db, sinks=sinks)
+
+        def progress(done, total):
+            for r in report:
+                r(done, total)
+
+        return simulate(scenario, db, progress=progress, sinks=sinks,
+                        progress_every=0.0 if progress_file is not None else 0.1)

@@ -1,0 +1,35 @@
+"""``boatland scenario check FILE`` and ``boatland scenario schema``."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+__all__ = ["add_parser", "check", "schema"]
+
+
+def add_parser(sub) -> None:
+    scen = sub.add_parser("scenario", help="scenario files: validate, JSON Schema",
+                          description="Scenario files (TOML): check one without running it, or print the JSON "
+                                      "Schema for editors.")
+    ssub = scen.add_subparsers(title="scenario commands", metavar="SCENARIO_COMMAND")
+    scen.set_defaults(func=lambda a: scen.print_help())
+    chk = ssub.add_parser("check", help="validate a scenario file and its physics against the database")
+    chk.add_argument("file", type=Path)
+    chk.set_defaults(func=check)
+    sch = ssub.add_parser("schema", help="print the JSON Schema of scenario files")
+    sch.set_defaults(func=schema)
+
+
+def check(args) -> int:
+    from boatland.scenario_check import check_file
+
+    report = check_file(args.file)
+    print(report.text)
+    return report.exit_status
+
+
+def schema(args) -> int:
+    from boatland.scenario_check import schema_text
+
+    print(schema_text())
+    return 0

@@ -1,0 +1,91 @@
+"""``boatland screen``: Wu (2014) slip screening, limiting Hs per (Tp, direction)."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from boatland.reproducible import pinned
+from boatland.cli.common import (freq_check, freq_directions, freq_load, freq_sea, freq_setup, scenario_argument,
+                                  screening_options)
+from boatland.cli.guard import Output, integer, positive
+from boatland.errors import BoatlandInputError
+
+__all__ = ["add_parser", "cmd"]
+
+
+def add_parser(sub) -> None:
+    screen = sub.add_parser(
+        "screen", help="Wu (2014) slip screening: limiting Hs per (Tp, direction)",
+        description="Frequency-domain slip screening (seed 002 §3.2.1, §3.4): slip-margin transfer functions of "
+                    "the fender-hinged vessel for downward, upward, left and right slip and roll, their statistics "
+                    "in the scenario's spectral shape, and the largest Hs whose incident probability per access is "
+                    "accepted, per peak period and relative wave direction. Prints the table; -o writes a polar "
+                    "figure.")
+    scenario_argument(screen)
+    screening_options(screen)
+    screen.add_argument("--tp", type=positive("s", 1e4), nargs=3, metavar=("MIN", "MAX", "N"), default=[3.0, 18.0, 16],
+                        help="peak periods: N from MIN to MAX [s] (default 3 18 16)")
+    screen.add_argument("--directions", type=integer(1, 3600), default=8, metavar="N",
+                        help="N relative directions over 360° (default 8: every 45°)")
+    screen.add_argument("-o", "--output", type=Path, metavar="PNG", help="write a polar figure of the limiting Hs")
+    screen.set_defaults(func=cmd)
+
+
+@pinned
+def cmd(args) -> int:
+    import numpy as np
+
+    from boatland.freqdomain import screening_grid
+
+    freq_check(args)
+    scenario, db = freq_load(args.scenario, [Output("-o", args.output, "figure")])
+    setup = freq_setup(args, scenario, db)
+    lo, hi, n = args.tp
+    if not (0 < lo <= hi and n >= 1 and n == int(n)):
+        raise BoatlandInputError(f"--tp {lo:g} {hi:g} {n:g}: need 0 < MIN ≤ MAX and a whole N ≥ 1")
+    if args.directions < 1:
+        raise BoatlandInputError(f"--directions {args.directions}: need N ≥ 1")
+    Tp = np.linspace(lo, hi, int(n))
+    beta = np.arange(args.directions) * 360.0 / args.directions
+    freq_directions(scenario, db, beta, f"--directions {args.directions} (every {360.0 / args.directions:g}°)")
+    sea, _ = freq_sea(scenario)
+    depth = scenario.sea.water_depth if scenario.sea is not None else None
+    table = screening_grid(db, setup, Tp, beta, accept=args.accept, statistics=args.statistics, method=args.method,
+                           sea=sea, water_depth=depth, access_duration=args.access, mu=args.mu, thrust=args.thrust)
+    mu = setup.mu if args.mu is None else args.mu
+    thrust = setup.thrust if args.thrust is None else args.thrust
+    if args.json:
+        print(json.dumps({"scenario": scenario.name, "database": db.name, "accept": table.accept,
+                          "statistics": table.statistics, "method": table.method, "mu": mu, "thrust": thrust,
+                          "roll_limit_deg": setup.roll_limit_deg, "Tp": table.Tp.tolist(),
+                          "beta_deg": table.beta_deg.tolist(),
+                          "Hs_limit": [[None if not np.isfinite(h) else float(h) for h in row] for row in table.Hs],
+                          "governing": table.governing.tolist()}, indent=2))
+    else:
+        print(f"{scenario.name}: limiting Hs [m] for P_acc = {table.accept:g} per {args.access:g} s access "
+              f"({table.statistics}, {table.method} hinge; μ = {mu:g}, F_b = {thrust / 1e3:g} kN, "
+              f"θ_max = {setup.roll_limit_deg:g}°); rows Tp, columns relative direction (180 = head seas)")
+        print(table.text())
+        modes, counts = np.unique(table.governing[np.isfinite(table.Hs)], return_counts=True)
+        print("governing: " + ", ".join(f"{m} {c}" for m, c in zip(modes, counts)))
+        parts = getattr(scenario.sea.waves, "parts", None) if scenario.sea is not None else None
+        if parts:
+            from boatland.freqdomain import sea_response
+
+            r = sea_response(db, setup.replace(mu=mu, thrust=thrust), parts, water_depth=depth,
+                             statistics=table.statistics, method=table.method, access_duration=args.access)
+            print(f"the scenario's own sea ({', '.join(f'Hs {p.Hs:g} m Tp {p.Tp:g} s' for p in parts)}): incident "
+                  f"probability {r.p_access:.3g} per access ({r.p_cycle:.3g} per {r.cycle_period:g} s cycle); "
+                  "σ of the margins " + ", ".join(f"{m} {s / 1e3:.3g} kN" for m, s in zip(r.names[:-1], r.sigma))
+                  + "; capacities " + ", ".join(f"{a / 1e3:.3g} kN" for a in r.capacity[:-1]))
+        if table.captured.min() < 0.99:
+            print(f"note: the database's band holds {100 * table.captured.min():.1f} % of the wave variance at "
+                  f"Tp = {table.Tp[np.argmin(table.captured)]:g} s (the rest is left out)")
+    if args.output:
+        from boatland.freqdomain.figures import plot_limits
+
+        plot_limits(table, args.output)
+        if not args.json:
+            print(f"wrote {args.output}")
+    return 0
