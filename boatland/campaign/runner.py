@@ -121,19 +121,23 @@ def execute_trial(source: str, spec: TrialSpec, loaders, keep_dir: str | None = 
 def check_cases(campaign: Campaign, load_database) -> list[str]:
     """The checks ``boatland run`` makes, for every case's scenario, before any trial: the scenario
     against its database (:meth:`Scenario.check_against`: dt against the fender contact, the fender on
-    the bow, ...) and the limits of :func:`boatland.model.limits.scenario_problems`.
+    the bow, ...), the limits of :func:`boatland.model.limits.scenario_problems` and the radiation memory
+    at the landed modes (:func:`boatland.model.landed.check_memory`).
 
     Returns the warnings (one line each, naming the case); raises :class:`SpecError` with every problem
     of every case (key paths prefixed by the case).
     """
+    from boatland.model.landed import check_memory
     from boatland.model.limits import scenario_problems
     from boatland.model.tomlspec import SpecError
+    from boatland.trial.simulate import prepare_memory
 
     problems, warns, dbs = [], [], {}
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
+        memories: dict = {}
         for case in campaign.cases:
-            sc = campaign.base.replace(dict(case.values)) if case.values else campaign.base
+            sc = campaign.scenario_for(campaign.trials()[case.index * campaign.seeds])
             key = str(sc.vessel.database_path or sc.vessel.database)
             if key not in dbs:
                 dbs[key] = load_database(sc)
@@ -141,6 +145,14 @@ def check_cases(campaign: Campaign, load_database) -> list[str]:
             check = sc.check_against(db)
             where = f"case {case.index} ({case.label() or 'base'})"
             found = list(check.problems) + [p for p in scenario_problems(sc, db) if p not in check.problems]
+            if not found and db.M is not None:     # the radiation memory damps this case's landed modes
+                rad = sc.radiation
+                mkey = (key, rad.method, rad.memory, rad.tail, rad.taper)
+                if mkey not in memories:
+                    memories[mkey] = prepare_memory(sc, db)
+                mc = check_memory(sc, db, memories[mkey], sc.time_step(db))
+                found += list(mc.problems)
+                warns += [f"{where}: {k}: {m}" for k, m in mc.warnings]
             problems += [(f"{where}: {k}", m) for k, m in found]
             warns += [f"{where}: {k}: {m}" for k, m in check.warnings]
     if problems:

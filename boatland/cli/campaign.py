@@ -53,7 +53,9 @@ def cmd(args) -> int:
     for w in check_cases(campaign, resolve_database):
         print(f"warning: {w}", file=sys.stderr)
     workers = 1 if args.scheduler else (args.workers or os.cpu_count() or 1)
-    check_memory(campaign.base, resolve_database(campaign.base), flag=f"{args.campaign}: duration",
+    longest = max((campaign.scenario_for(campaign.trials()[c * campaign.seeds]) for c in range(len(campaign.cases))),
+                  key=lambda s: s.simulation.duration)
+    check_memory(longest, resolve_database(longest), flag=f"{args.campaign}: duration",
                  copies=min(workers, campaign.n_trials))
     where = f"Dask scheduler {args.scheduler}" if args.scheduler else \
         f"{args.workers or os.cpu_count()} local worker process(es)"

@@ -28,6 +28,9 @@ def add_parser(sub) -> None:
                         help="peak periods: N from MIN to MAX [s] (default 3 18 16)")
     screen.add_argument("--directions", type=integer(1, 3600), default=8, metavar="N",
                         help="N relative directions over 360° (default 8: every 45°)")
+    screen.add_argument("--shear-sweep", type=positive("s", 1e4), metavar="TP",
+                        help="instead of the table over Tp: the limiting Hs at peak period TP against the fender's "
+                             "shear stiffness (0.1× … 100× the scenario's, and rigid), per direction; -o draws it")
     screen.add_argument("-o", "--output", type=Path, metavar="PNG", help="write a polar figure of the limiting Hs")
     screen.set_defaults(func=cmd)
 
@@ -51,6 +54,8 @@ def cmd(args) -> int:
     freq_directions(scenario, db, beta, f"--directions {args.directions} (every {360.0 / args.directions:g}°)")
     sea, _ = freq_sea(scenario)
     depth = scenario.sea.water_depth if scenario.sea is not None else None
+    if args.shear_sweep is not None:
+        return _shear_sweep(args, scenario, db, setup, beta, sea, depth)
     table = screening_grid(db, setup, Tp, beta, accept=args.accept, statistics=args.statistics, method=args.method,
                            sea=sea, water_depth=depth, access_duration=args.access, mu=args.mu, thrust=args.thrust)
     mu = setup.mu if args.mu is None else args.mu
@@ -86,6 +91,37 @@ def cmd(args) -> int:
         from boatland.freqdomain.figures import plot_limits
 
         plot_limits(table, args.output)
+        if not args.json:
+            print(f"wrote {args.output}")
+    return 0
+
+
+def _shear_sweep(args, scenario, db, setup, beta, sea, depth) -> int:
+    """``screen --shear-sweep TP``: limiting Hs against the fender's shear stiffness."""
+    import numpy as np
+
+    from boatland.freqdomain.screening import shear_sweep
+
+    sw = shear_sweep(db, setup, args.shear_sweep, beta, accept=args.accept, statistics=args.statistics,
+                     method=args.method, sea=sea, water_depth=depth, access_duration=args.access, mu=args.mu,
+                     thrust=args.thrust)
+    if args.json:
+        print(json.dumps({"scenario": scenario.name, "database": db.name, "Tp": sw.Tp, "accept": sw.table.accept,
+                          "statistics": sw.table.statistics, "beta_deg": sw.beta_deg.tolist(),
+                          "shear_stiffness": [None if not np.isfinite(k) else float(k) for k in sw.k_t],
+                          "Hs_limit": [[None if not np.isfinite(h) else float(h) for h in row] for row in sw.Hs],
+                          "governing": sw.governing.tolist()}, indent=2))
+    else:
+        print(f"{scenario.name}: limiting Hs [m] at Tp = {sw.Tp:g} s for P_acc = {sw.table.accept:g} per "
+              f"{args.access:g} s access ({sw.table.statistics}) against the fender's shear stiffness per contact "
+              f"(the scenario's: {'rigid' if not np.isfinite(setup.shear_stiffness) else f'{setup.shear_stiffness:.3g} N/m'}"
+              "); rows k_t, columns relative direction (180 = head seas)")
+        print(sw.text())
+    if args.output:
+        from boatland.freqdomain.figures import plot_shear_sweep
+
+        plot_shear_sweep(sw, args.output, title=f"{scenario.name}: limiting Hs at Tp {sw.Tp:g} s against the "
+                                                f"fender's shear stiffness")
         if not args.json:
             print(f"wrote {args.output}")
     return 0

@@ -24,10 +24,13 @@ fender line closest to the tube axis,
 
 where the tube meets the fender's face (the axis projects onto the line, :math:`|s| \le w_c`) the
 normal is the face's, :math:`n = -m` with :math:`m = (R(d_c \times e_z))_{xy}` normalised (from the tube
-towards the vessel), and the penetration is :math:`\delta = \rho_c - (a_c - Q)\cdot m` — a deep
-compression of a soft fender past the tube's axis stays a compression; where it meets the end of the
-line the normal follows the tube surface to that end, :math:`n = (Q - a_c)_{xy}/|(Q - a_c)_{xy}|`,
-:math:`\delta = \rho_c - |(Q - a_c)_{xy}|` (continuous with the face at :math:`|s| = w_c`). The
+towards the vessel), and the penetration is :math:`\delta = \rho_c - (a_c - Q)\cdot m`; where it meets
+the end of the line the normal follows the tube surface to that end, :math:`n = (Q - a_c)_{xy}/|(Q -
+a_c)_{xy}|`, :math:`\delta = \rho_c - |(Q - a_c)_{xy}|` (continuous with the face at :math:`|s| = w_c`).
+The geometry assumes the fender is compressed less than a tube radius; a lumped spring that compresses
+further (the tank model's c_f = 0.5 kN/m: 0.12 m under 62 N on a 17 mm tube) is given a flat plate at
+the tubes' front instead by :func:`boatland.trial.simulate.contact_arrays` — with a tube axis behind the
+face, the face normal would turn the normal force about it, a yaw lever with no physical counterpart. The
 tangents are :math:`t_v = e_z` and :math:`t_h = e_z \times n`. The contact is **off the landing** when Q is above
 or below the tube, or when the tube has passed the end of the fender line by a tube radius (no
 contact is possible there): the trial ends with that incident.

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["plot_limits", "plot_raos"]
+__all__ = ["plot_limits", "plot_raos", "plot_shear_sweep"]
 
 
 def _pyplot():
@@ -117,3 +117,28 @@ def plot_pile_comparison(omega, open_sea, with_pile, betas, path, title: str = "
     fig.savefig(path, dpi=110)
     plt.close(fig)
     return path
+
+
+def plot_shear_sweep(sweep, path: str | Path, *, title: str = "") -> Path:
+    """Limiting Hs [m] against the fender's shear stiffness per contact [N/m] (log axis; the rigid stick
+    drawn as a dashed level at the right), one line per relative wave direction
+    (:func:`boatland.freqdomain.screening.shear_sweep`)."""
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(7.5, 4.5), constrained_layout=True)
+    finite = np.isfinite(sweep.k_t)
+    betas = list(sweep.beta_deg)
+    for j, b in enumerate(sweep.beta_deg):
+        mirror = (360.0 - b) % 360.0
+        if b > 180.0 and mirror in betas and np.allclose(sweep.Hs[:, j], sweep.Hs[:, betas.index(mirror)], rtol=1e-9):
+            continue                                   # port–starboard mirror of a drawn direction
+        line, = ax.plot(sweep.k_t[finite], sweep.Hs[finite, j], marker="o", label=f"{b:g}°")
+        if (~finite).any():
+            ax.axhline(sweep.Hs[~finite, j][0], color=line.get_color(), ls="--", lw=0.8)
+    ax.set_xscale("log")
+    ax.set(xlabel="shear stiffness k_t per contact [N/m] (dashed: rigid stick)", ylabel="limiting Hs [m]",
+           title=title or f"limiting Hs at Tp {sweep.Tp:g} s")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(title="relative direction (180° = head seas;\nits mirror 360° − β is the same)", fontsize=8, ncol=2)
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return Path(path)

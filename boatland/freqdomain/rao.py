@@ -281,7 +281,8 @@ def _per_point(value, n_points: int, name: str) -> np.ndarray:
 
 def hinged_rao(db: HydroDB, omega, points, *, beta_deg=None, normal=None, stiffness=None, damping=None,
                shear_stiffness=None, shear_damping=None, sideways: bool = True, thrust: float = 0.0,
-               thrust_position=(0.0, 0.0, 0.0), additional_damping=None) -> HingedResponse:
+               thrust_position=(0.0, 0.0, 0.0), additional_damping=None, normal_follows: str = "fixed",
+               tube_radius=np.inf) -> HingedResponse:
     r"""Motions and contact forces of the vessel on its landing (Grøtting 2015 §3.2.1 after Wu 2014).
 
     Solves (:mod:`boatland.model.landed`; Grøtting 2015 eq. 3.1–3.12)
@@ -339,6 +340,11 @@ def hinged_rao(db: HydroDB, omega, points, *, beta_deg=None, normal=None, stiffn
         Body point of the thrust [m].
     additional_damping : array_like, shape (6, 6) or (6,), optional
         Extra linear damping of the vessel.
+    normal_follows : {"fixed", "fender", "tube"}
+        How the contact normals turn with the motions (:meth:`boatland.model.landed.ContactLaw.geometric_stiffness`:
+        the face of a line fender turns with the yaw, a point on a round tube follows its surface).
+    tube_radius : float or array_like
+        Tube radius [m] for ``normal_follows="tube"``.
 
     Returns
     -------
@@ -375,7 +381,7 @@ def hinged_rao(db: HydroDB, omega, points, *, beta_deg=None, normal=None, stiffn
                          _per_point(0.0 if damping is None else damping, n_p, "damping"),
                          _per_point(inf if shear_stiffness is None else shear_stiffness, n_p, "shear_stiffness"),
                          _per_point(0.0 if shear_damping is None else shear_damping, n_p, "shear_damping"),
-                         sideways=sideways)
+                         sideways=sideways, follows=normal_follows, radius=tube_radius)
     elif shear_stiffness is not None:
         raise ValueError("a shear spring needs the normal's spring too (stiffness=)")
     else:  # Wu's rigid hinge: every direction pinned

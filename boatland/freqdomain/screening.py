@@ -73,11 +73,14 @@ import numpy as np
 from boatland.errors import BoatlandInputError
 from boatland.freqdomain.rao import hinged_rao
 from boatland.model.hydrodb import HydroDB
+from boatland.model.landed import normal_follows
 from boatland.model.pile_diffraction import pile_scattered_excitation
+from boatland.model.scenario_schema import SHEAR_DAMPING_RATIO_DEFAULT, SHEAR_STIFFNESS_DEFAULT
 from boatland.model.seastate import SpectrumPart
 from boatland.waves.spectra import spreading_cos2s
 
-__all__ = ["ACCEPT_PRESETS", "ACCESS_DURATION", "MODES", "LandingSetup", "LimitTable", "SeaResponse", "SlipTransfer",
+__all__ = ["ACCEPT_PRESETS", "ACCESS_DURATION", "MODES", "SHEAR_FACTORS", "LandingSetup", "LimitTable", "SeaResponse",
+           "ShearSweep", "SlipTransfer", "shear_sweep",
            "accept_probability", "incident_probability", "limiting_hs", "rayleigh_exceedance", "rice_rate",
            "screening_grid", "sea_response", "slip_transfer", "spectral_moments", "vanmarcke_rate"]
 
@@ -154,6 +157,10 @@ class LandingSetup:
         ``(radius, (x, y), water_depth)``: the monopile whose scattered wave the vessel feels — its radius
         [m], the vessel's mean reference-point position relative to the pile axis (global) [m] and the
         depth [m] — as the time domain applies it (``landing.diffraction``); None: the open sea.
+    fender_width : float
+        Length of the fender line at each contact [m] (0: a point fender).
+    tube_radius : ndarray, shape (Np,)
+        Radii of the tubes [m] (how a point fender's normal turns: :func:`boatland.model.landed.normal_follows`).
     """
 
     points: np.ndarray
@@ -170,6 +177,8 @@ class LandingSetup:
     heading_deg: float = 0.0
     roll_limit_deg: float = 10.0
     pile: tuple | None = None
+    fender_width: float = 0.0
+    tube_radius: np.ndarray | float = np.inf
 
     def __post_init__(self):
         P = np.atleast_2d(np.asarray(self.points, dtype=float))
@@ -284,7 +293,8 @@ class LandingSetup:
                     stiffness=f.stiffness, damping=f.damping, shear_stiffness=f.shear_stiffness,
                     shear_damping=c_t, sideways=f.sideways,
                     additional_damping=scenario.additional_damping(db)[0], heading_deg=scenario.vessel.heading_deg,
-                    roll_limit_deg=lim, pile=pile)
+                    roll_limit_deg=lim, pile=pile, fender_width=f.width,
+                    tube_radius=np.array([st.diameter / 2 for st in scenario.landing.struts]))
         setup.check_on_hull(db, src)
         return setup
 
@@ -352,7 +362,13 @@ def landed_response(db: HydroDB, setup: LandingSetup, omega, beta_deg, method: s
                       stiffness=setup.stiffness, damping=setup.damping, shear_stiffness=shear,
                       shear_damping=setup.shear_damping if shear is not None else None, sideways=setup.sideways,
                       thrust=setup.thrust, thrust_position=setup.thrust_position,
-                      additional_damping=setup.additional_damping)
+                      additional_damping=setup.additional_damping,
+                      **_follows(normal_follows(setup.fender_width, np.broadcast_to(setup.tube_radius, (setup.n_points,)),
+                                                setup.thrust / setup.n_points / setup.stiffness)))
+
+
+def _follows(spec: dict) -> dict:
+    return {"normal_follows": spec["follows"], "tube_radius": spec.get("radius", np.inf)}
 
 
 def slip_transfer(db: HydroDB, setup: LandingSetup, *, omega=None, beta_deg=None, method: str = "improved",
@@ -772,3 +788,61 @@ def sea_response(db: HydroDB, setup: LandingSetup, parts, *, water_depth: float 
                                      access_duration=access_duration)
     return SeaResponse(sigma=np.sqrt(m[:, 0]), m=m, capacity=tr.capacity, names=tr.names, p_cycle=float(pc[0, 0]),
                        p_access=float(pa[0, 0]), cycle_period=float(Tc), statistics=statistics, method=method)
+
+
+#: Shear stiffnesses of :func:`shear_sweep` as multiples of the scenario's (and the rigid stick, ``inf``).
+SHEAR_FACTORS = (0.1, 0.3, 1.0, 3.0, 10.0, 100.0, math.inf)
+
+
+@dataclass(frozen=True, eq=False)
+class ShearSweep:
+    """Limiting Hs against the fender's shear stiffness: ``Hs`` (Nk, Nβ) at one Tp for the stiffnesses
+    ``k_t`` (Nk,) [N/m] (``inf``: the rigid stick) and relative directions ``beta_deg``; ``governing``
+    the response at each limit; ``table`` the first :class:`LimitTable` (for its accept, statistics)."""
+
+    Tp: float
+    k_t: np.ndarray
+    beta_deg: np.ndarray
+    Hs: np.ndarray
+    governing: np.ndarray
+    table: LimitTable
+
+    def text(self) -> str:
+        head = "k_t [N/m] \\ β [deg] " + "".join(f"{b:>8g}" for b in self.beta_deg)
+        rows = [head]
+        for k, h in zip(self.k_t, self.Hs):
+            label = "rigid" if not np.isfinite(k) else f"{k:.3g}"
+            rows.append(f"{label:>19} " + "".join(f"{x:>8.3f}" if np.isfinite(x) else f"{'>' + str(int(HS_MAX)):>8}"
+                                                  for x in h))
+        return "\n".join(rows)
+
+
+def shear_sweep(db: HydroDB, setup: LandingSetup, Tp: float, beta_deg, *, k_t=None, **kw) -> ShearSweep:
+    r"""The limiting Hs of :func:`screening_grid` at one peak period for a range of shear stiffnesses of
+    the fender (the oblique-sea answer depends on it: the rubber's compliance sets how much of the roll
+    moment two contacts take as a couple of opposite vertical forces). The shear damping keeps its ratio of
+    critical, :math:`c_t \propto \sqrt{k_t}`.
+
+    Parameters
+    ----------
+    k_t : array_like, optional
+        Stiffnesses [N/m] (``inf``: rigid); default :data:`SHEAR_FACTORS` × the setup's (× 3 MN/m with 5 % of
+        critical damping when the setup is rigid: Grøtting 2015 §3.2.2).
+    **kw
+        Passed to :func:`screening_grid` (accept, statistics, sea, ...).
+    """
+    if math.isfinite(setup.shear_stiffness):
+        base = setup.shear_stiffness
+        ratio = setup.shear_damping / math.sqrt(base)             # c_t/√k_t = 2ζ√m_eff: ζ kept
+    else:                                                          # from a rigid stick: Grøtting's defaults
+        base = SHEAR_STIFFNESS_DEFAULT
+        Mt = db.M + (db.A_inf if db.A_inf is not None else db.A[:, :, -1])
+        g = [np.concatenate([[0.0, 0.0, 1.0], np.cross(p, [0.0, 0.0, 1.0])]) for p in setup.points]
+        ratio = np.array([2 * SHEAR_DAMPING_RATIO_DEFAULT / math.sqrt(gi @ np.linalg.solve(Mt, gi)) for gi in g])
+    ks = np.asarray([f * base for f in SHEAR_FACTORS] if k_t is None else k_t, dtype=float)
+    tables = []
+    for k in ks:
+        s = setup.replace(shear_stiffness=float(k), shear_damping=ratio * math.sqrt(k) if np.isfinite(k) else 0.0)
+        tables.append(screening_grid(db, s, [Tp], beta_deg, **kw))
+    return ShearSweep(Tp=float(Tp), k_t=ks, beta_deg=tables[0].beta_deg, Hs=np.array([t.Hs[0] for t in tables]),
+                      governing=np.array([t.governing[0] for t in tables]), table=tables[0])

@@ -35,8 +35,10 @@ compiled that way (numba refuses it).
 
 from __future__ import annotations
 
+import time
+
 import numpy as np
-from numba import njit
+from numba import njit, objmode
 
 from boatland.contact.fender import (OFF, RK4_WEIGHTS, _workspace, accumulate_sliding, contact_forces,
                                      contact_state_arrays, contact_states, decide_modes)
@@ -287,11 +289,23 @@ def _slid_off(cs):
     return False
 
 
+#: Sleep [s] between looks at the gate while the kernel waits for its sinks (see :func:`run_cummins`).
+GATE_SLEEP = 1e-4
+
+
+@njit(cache=True, nogil=True)
+def _wait_for_gate(gate, n):
+    """Wait (sleeping, with the GIL released between looks) until ``gate[0] ≥ n``."""
+    while n > gate[0]:
+        with objmode():
+            time.sleep(GATE_SLEEP)
+
+
 @njit(cache=True, nogil=True)
 def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
                 conv, Kh, pairs_i, pairs_j, n_hist, ss_A, ss_B, ss_C, ss_in, ss_out, ss_pair,
                 ct, v_tol, limit_trans, limit_rot, out_x, out_v, out_mode, out_fn, out_ft, out_need,
-                out_avail, out_tpos, out_slide, out_work, progress):
+                out_avail, out_tpos, out_slide, out_work, progress, gate):
     """Integrate the Cummins equation with classic RK4; returns ``(status, last_step)``.
 
     Runs without the GIL (``nogil``): another thread may poll ``progress`` meanwhile. All buffers are
@@ -340,6 +354,10 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
     progress : (1,) int64
         Progress counter: set to the number of steps completed at the start of every step, and to
         ``last`` on return.
+    gate : (1,) int64
+        The kernel starts step n only once ``gate[0] ≥ n`` (it sleeps meanwhile): whoever consumes the
+        rows (a run log) keeps it at most a block ahead of what is safely written, so that a killed run
+        loses at most that block. ``n_steps`` or more: never waits.
 
     Returns
     -------
@@ -372,6 +390,8 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
     xs, vs, zs = np.zeros(6), np.zeros(6), np.zeros(n_s)  # stage state
     for n in range(n_steps + 1):
         progress[0] = n
+        if n > gate[0]:
+            _wait_for_gate(gate, n)
         if conv:
             _history(vbuf, head, count, Kh, pairs_i, pairs_j, dt, H)
         for st in range(4):

@@ -39,7 +39,8 @@ import numpy as np
 
 from boatland.model.hydrodb import HydroDB, skew
 
-__all__ = ["ContactLaw", "LandedModes", "MemoryCheck", "check_memory", "contact_law", "landed_modes", "point_map",
+__all__ = ["ContactLaw", "LandedModes", "MemoryCheck", "check_memory", "contact_law", "landed_modes", "lumped_fender", "normal_follows",
+           "point_map",
            "preload_stiffness", "solve_saddle", "static_preload", "tangents"]
 
 
@@ -138,6 +139,14 @@ class ContactLaw:
         Shear spring and damper along t_v (and t_h when ``sideways``); ``k_t = inf`` pins them.
     sideways : bool
         The horizontal tangent t_h is restrained (friction along the tube), not only t_v.
+    follows : str
+        How the contact normal turns as the vessel moves (:meth:`geometric_stiffness`): ``"fixed"`` (a
+        plate, or the linear hinge of Wu 2014), ``"fender"`` (a tube against the face of a fender line:
+        the normal is the face's and turns with the vessel's yaw), ``"tube"`` (a point fender on a round
+        tube: the normal follows the tube surface as the point moves sideways).
+    radius : ndarray, shape (Np,)
+        For ``"tube"``: the tube's radius [m] (less the static compression N⁰/k_n it is the distance from
+        the axis to the contact point).
     """
 
     points: np.ndarray
@@ -147,6 +156,8 @@ class ContactLaw:
     k_t: np.ndarray
     c_t: np.ndarray
     sideways: bool = True
+    follows: str = "fixed"
+    radius: np.ndarray | float = np.inf
 
     def __post_init__(self):
         P = np.atleast_2d(np.asarray(self.points, dtype=float))
@@ -157,11 +168,13 @@ class ContactLaw:
             raise ValueError("points and normals must be finite (Np, 3) arrays with non-zero normals")
         object.__setattr__(self, "points", P)
         object.__setattr__(self, "normals", N / lens[:, None])
-        for name in ("k_n", "c_n", "k_t", "c_t"):
+        for name in ("k_n", "c_n", "k_t", "c_t", "radius"):
             a = np.array(np.broadcast_to(np.asarray(getattr(self, name), dtype=float), (n_p,)))
             if np.any(a < 0) or np.any(np.isnan(a)):
                 raise ValueError(f"{name} must be ≥ 0 (inf: pinned), got {a}")
             object.__setattr__(self, name, a)
+        if self.follows not in ("fixed", "fender", "tube"):
+            raise ValueError(f"follows must be 'fixed', 'fender' or 'tube', got {self.follows!r}")
 
     @property
     def n_points(self) -> int:
@@ -203,6 +216,40 @@ class ContactLaw:
                     K += k * np.outer(g, g)
                     D += cc * np.outer(g, g)
         return K, D, (np.array(rows) if rows else np.zeros((0, 6))), owners
+
+    def geometric_stiffness(self, forces) -> np.ndarray:
+        r"""Stiffness of the static normal forces :math:`N^0_c = n_c^\top J^0_c` as the normals turn:
+        :math:`\delta F = K x` (enters the dynamics as :math:`-K`, as :func:`preload_stiffness`).
+
+        - ``"fender"``: the normal is the fender face's, :math:`n(\theta) = n_c + \theta_z\,e_z\times n_c`
+          (the horizontal part of the rotated face normal; roll and pitch turn it only to second order),
+          so :math:`\delta J_c = N^0_c\,\theta_z\,(e_z \times n_c)` at :math:`r_c` — a follower force like the
+          thrust, which it balances in yaw;
+        - ``"tube"``: a point on a round tube of radius ρ (axis to contact): moving sideways by s along
+          :math:`t_h` turns the normal by s/ρ, :math:`\delta J_c = (N^0_c/\rho)\,t_h t_h^\top G_c x` — a
+          negative lateral stiffness −N/ρ (pushing on a convex surface);
+        - ``"fixed"``: none.
+
+        Parameters
+        ----------
+        forces : array_like, shape (Np, 3)
+            Static contact forces on the vessel J⁰_c [N].
+        """
+        K = np.zeros((6, 6))
+        if self.follows == "fixed":
+            return K
+        for c in range(self.n_points):
+            n = self.normals[c]
+            N0 = float(n @ np.asarray(forces[c], dtype=float))
+            if self.follows == "fender":
+                d = np.cross([0.0, 0.0, 1.0], n)
+                K[:, 5] += N0 * np.concatenate([d, np.cross(self.points[c], d)])
+            else:
+                rho = self.radius[c] - (N0 / self.k_n[c] if np.isfinite(self.k_n[c]) and self.k_n[c] > 0 else 0.0)
+                if np.isfinite(rho) and rho > 0:
+                    g = tangents(n)[1] @ point_map(self.points[c])
+                    K += N0 / rho * np.outer(g, g)
+        return K
 
     def reactions(self, x: np.ndarray, lam: np.ndarray, omega) -> np.ndarray:
         r"""Force on the vessel at each contact, (..., Np, 3): the pins' :math:`\lambda d` and the springs'
@@ -252,7 +299,7 @@ def static_preload(C: np.ndarray, law: ContactLaw, thrust: float, thrust_positio
         J_new = law.reactions(x0, ls[:, 0].real, 0.0).real
         done = np.max(np.abs(J_new - J0)) <= 1e-12 * max(np.max(np.abs(J_new)), 1e-300)
         J0 = J_new
-        Kg = preload_stiffness(thrust, rT, J0, law.points)
+        Kg = preload_stiffness(thrust, rT, J0, law.points) + law.geometric_stiffness(J0)
         if done:
             return x0, J0, Kg
     raise ValueError("the static equilibrium under the thrust did not converge: the preload's geometric stiffness "
@@ -373,7 +420,32 @@ def contact_law(scenario, db: HydroDB) -> ContactLaw | None:
     f = scenario.fender
     normals = np.array([g[0][:3] for g in contact_directions(scenario)])
     c_t = 0.0 if f.rigid else np.asarray(contact_period(scenario, db).shear_damping)
-    return ContactLaw(f.points_array, normals, f.stiffness, f.damping, f.shear_stiffness, c_t, sideways=f.sideways)
+    compression = scenario.thrust.force / len(f.points) / f.stiffness if scenario.thrust is not None else 0.0
+    return ContactLaw(f.points_array, normals, f.stiffness, f.damping, f.shear_stiffness, c_t, sideways=f.sideways,
+                      **normal_follows(f.width, [s.diameter / 2 for s in scenario.landing.struts], compression))
+
+
+def lumped_fender(scenario) -> bool:
+    """True when the fender's static compression under the thrust, F_b / (N c_f), reaches a tube's radius:
+    its spring is a lumped compliance (the tank model's c_f = 0.5 kN/m: 0.12 m under 62 N on 17 mm tubes)
+    and the fender pushes on a flat plate at the tubes' front, along the landing's normal — the contact
+    plane of Ferreira González (2023) — instead of meeting round tubes (:mod:`boatland.contact.fender`; used by
+    :func:`boatland.trial.simulate.contact_arrays`)."""
+    f, land, thr = scenario.fender, scenario.landing, scenario.thrust
+    if f is None or land is None or thr is None:
+        return False
+    return thr.force / len(f.points) / f.stiffness >= min(st.diameter for st in land.struts) / 2
+
+
+def normal_follows(width: float, radii, compression: float = 0.0) -> dict:
+    """How the contact normals of a fender of this ``width`` on tubes of these ``radii`` turn
+    (:attr:`ContactLaw.follows`), as :mod:`boatland.contact.fender` has them: a line fender meets the
+    tubes with its face, a point fender follows the round tubes — unless the static ``compression``
+    [m] reaches past the tube's axis, where the normal is the landing's (fixed)."""
+    radii = np.asarray(radii, dtype=float)
+    if compression >= radii.min():
+        return {"follows": "fixed"}
+    return {"follows": "fender"} if width > 0 else {"follows": "tube", "radius": radii}
 
 
 @dataclass(frozen=True)

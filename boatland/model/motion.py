@@ -52,7 +52,7 @@ class MotionArrays:
 
     def run(self, dt: float, n_steps: int, *, F_ext=None, thrust=None, r_p=(0.0, 0.0, 0.0), x0=None, v0=None,
             Bv=None, Bq=None, contacts=None, v_tol: float = 1e-6, limit_trans: float = 1e3,
-            limit_rot: float = 1.0, progress=None, out=None):
+            limit_rot: float = 1.0, progress=None, out=None, gate=None):
         """Integrate; returns a dict of arrays (t, x, v and, with contacts, mode, fn, ft, needed,
         available, tpos, slide, work) plus ``status`` and ``message``.
 
@@ -61,7 +61,9 @@ class MotionArrays:
         (1,), receives the number of steps completed while the kernel runs (it releases the GIL, so
         another thread can poll it for a progress bar). ``out``: preallocated output arrays from
         :meth:`allocate_outputs` (rows below the progress count are final while the kernel runs — a
-        logger in another thread may read them); by default they are allocated here.
+        logger in another thread may read them); by default they are allocated here. ``gate``, an int64
+        array of shape (1,): the kernel starts step n only when ``gate[0] ≥ n`` (a logger keeps it a block
+        ahead of what it has written, see :func:`boatland.integrate.run_cummins`); default: never waits.
         """
         m = 2 * n_steps + 1
         F_ext = np.zeros((m, 6)) if F_ext is None else np.ascontiguousarray(F_ext, dtype=float)
@@ -75,6 +77,10 @@ class MotionArrays:
             raise ValueError("contacts must be a boatland.contact.fender.Contacts (see contact_set)")
         if progress is None:
             progress = np.zeros(1, dtype=np.int64)
+        if gate is None:
+            gate = np.array([n_steps], dtype=np.int64)
+        elif not (isinstance(gate, np.ndarray) and gate.dtype == np.int64 and gate.shape == (1,)):
+            raise ValueError("gate must be a numpy int64 array of shape (1,)")
         elif not (isinstance(progress, np.ndarray) and progress.dtype == np.int64 and progress.shape == (1,)):
             raise ValueError("progress must be a numpy int64 array of shape (1,)")
         nc = contacts[0].shape[0]
@@ -87,7 +93,7 @@ class MotionArrays:
             np.asarray(r_p, dtype=float), vec(x0), vec(v0), self.conv, self.Kh, self.pairs_i, self.pairs_j,
             self.n_hist, self.ss_A, self.ss_B, self.ss_C, self.ss_in, self.ss_out, self.ss_pair, contacts, float(v_tol),
             float(limit_trans), float(limit_rot), out["x"], out["v"], out["mode"], out["fn"], out["ft"],
-            out["needed"], out["available"], out["tpos"], out["slide"], out["work"], progress)
+            out["needed"], out["available"], out["tpos"], out["slide"], out["work"], progress, gate)
         out = {k: a[:last + 1] for k, a in out.items()}
         out["t"] = np.arange(last + 1) * dt
         out["status"], out["message"] = int(status), STATUS_MESSAGES[int(status)]

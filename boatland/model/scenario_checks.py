@@ -237,6 +237,13 @@ def check_against(scenario, db: HydroDB) -> ScenarioCheck:
         notes.append(f"fender contact: fastest normal mode period {cp.period:.4g} s; effective mass along the normal "
                      + ", ".join(f"{m:.4g} kg" for m in cp.m_eff) + "; T_f = 2π√(m_eff/c_f) = "
                      + ", ".join(f"{t:.4g} s" for t in cp.undamped))
+        from boatland.model.landed import lumped_fender
+
+        if lumped_fender(scenario):
+            notes.append(f"fender geometry: the static compression under the thrust, "
+                         f"{scenario.thrust.force / len(f.points) / f.stiffness:.3g} m, reaches past the tubes' "
+                         "axes: c_f is a lumped spring, and the fender pushes on a flat plate at the tubes' front "
+                         "along the landing's normal (the contact plane of Ferreira González 2023)")
         if f.rigid:
             notes.append("fender shear: rigid stick (the needed stick force is solved with the motion)")
         else:

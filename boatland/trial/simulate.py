@@ -23,7 +23,7 @@ from boatland.contact.fender import Contacts, contact_set, no_contacts
 from boatland.errors import BoatlandInputError
 from boatland.integrate.cummins import OUTCOME_STATUSES
 from boatland.irf.impulse import IRFSettings
-from boatland.model.landed import check_memory
+from boatland.model.landed import check_memory, lumped_fender
 from boatland.model.motion import compile_motion
 from boatland.model.radiation import RadiationMemory, default_dt, radiation_memory
 from boatland.model.scenario import Scenario, ScenarioWarning
@@ -119,9 +119,12 @@ def contact_arrays(scenario: Scenario, db: HydroDB) -> Contacts:
     to_local = np.array([[c, s], [-s, c]])  # global → local rotation (by −ψ)
     fender, struts = scenario.fender, scenario.landing.struts
     axes = (np.array([st.position for st in struts], dtype=float) - [x0, y0]) @ to_local.T
+    normals = scenario.landing.normals @ to_local.T
+    radius = np.array([st.diameter / 2 for st in struts])
+    if lumped_fender(scenario):   # compressed past the tubes' axes: a plate at their front (the thesis's plane)
+        axes, radius = axes + radius[:, None] * normals, np.full(len(struts), np.inf)
     c_t = contact_period(scenario, db).shear_damping if not fender.rigid else 0.0
-    return contact_set(fender.points_array, axes, [st.diameter / 2 for st in struts],
-                       scenario.landing.normals @ to_local.T, direction=(0.0, 1.0, 0.0),
+    return contact_set(fender.points_array, axes, radius, normals, direction=(0.0, 1.0, 0.0),
                        half_width=fender.width / 2, bottom=[st.bottom for st in struts],
                        top=[st.top for st in struts], stiffness=fender.stiffness, damping=fender.damping,
                        shear_stiffness=fender.shear_stiffness, shear_damping=c_t, mu_s=fender.mu_s,
@@ -232,18 +235,20 @@ def _run_watched(arrays, dt: float, n: int, kwargs: dict, progress, sinks, info:
     sinks fall behind the kernel, every finished block is handed over in one call (a whole number of
     blocks) so that they catch up."""
     counter = np.zeros(1, dtype=np.int64)
+    block = max(1, int(round(1.0 / dt)))
+    # the kernel may run at most one block ahead of what the sinks have taken (a killed run loses ≤ 1 s)
+    gate = np.array([block if sinks else n], dtype=np.int64)
     live = arrays.allocate_outputs(n, kwargs["contacts"][0].shape[0])
     box: dict = {}
 
     def work():
         try:
-            box["out"] = arrays.run(dt, n, progress=counter, out=live, **kwargs)
+            box["out"] = arrays.run(dt, n, progress=counter, out=live, gate=gate, **kwargs)
         except BaseException as exc:  # handed to the caller's thread below
             box["error"] = exc
 
     for sink in sinks:
         sink.start(info)
-    block = max(1, int(round(1.0 / dt)))
     sent = 0                       # rows handed to the sinks so far
     shown = -1.0
     worker = threading.Thread(target=work, name="boatland-trial", daemon=True)
@@ -258,6 +263,7 @@ def _run_watched(arrays, dt: float, n: int, kwargs: dict, progress, sinks, info:
             k1 = sent + (done - sent) // block * block
             _send(sinks, live, F, thrust, dt, sent, k1)
             sent = k1
+            gate[0] = sent + block           # the sinks have it: let the kernel run one more block
             continue
         if not alive:
             break

@@ -131,7 +131,7 @@ def test_unreachable_scheduler_is_a_clear_error(reference):
 def test_resume_after_sigkill_equals_an_uninterrupted_run(tmp_path):
     """Killed with SIGKILL at random moments, then run to the end: the same store as one uninterrupted
     run, bit for bit in the summaries, every trial once."""
-    camp = campaign_file(tmp_path, name="killed", seeds=4, duration=1200.0, method="convolution")
+    camp = campaign_file(tmp_path, name="killed", seeds=4, duration=1200.0, method="state_space")
     clean = tmp_path / "clean.h5"
     assert run("campaign", camp, "-o", clean, "--workers", "1").returncode == 0
     store = tmp_path / "killed.h5"
