@@ -352,12 +352,12 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
         Sliding of the fender over the tube during the step that ended at each row [m]; ``out_work``
         (n_steps + 1, Nc) the friction work of that step [J] (never positive).
     progress : (1,) int64
-        Progress counter: set to the number of steps completed at the start of every step, and to
-        ``last`` on return.
+        Progress counter: rows below it are final (set as each step's record is written), ``last`` on
+        return.
     gate : (1,) int64
-        The kernel starts step n only once ``gate[0] ≥ n`` (it sleeps meanwhile): whoever consumes the
-        rows (a run log) keeps it at most a block ahead of what is safely written, so that a killed run
-        loses at most that block. ``n_steps`` or more: never waits.
+        Having written row n, the kernel integrates on to t_{n+1} only once ``gate[0] ≥ n + 1`` (it
+        sleeps meanwhile): whoever consumes the rows (a run log) keeps it at most a block ahead of what
+        is safely written, so that a killed run loses at most that block. ``n_steps`` or more: never waits.
 
     Returns
     -------
@@ -390,8 +390,6 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
     xs, vs, zs = np.zeros(6), np.zeros(6), np.zeros(n_s)  # stage state
     for n in range(n_steps + 1):
         progress[0] = n
-        if n > gate[0]:
-            _wait_for_gate(gate, n)
         if conv:
             _history(vbuf, head, count, Kh, pairs_i, pairs_j, dt, H)
         for st in range(4):
@@ -408,6 +406,9 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
                     return STATUS_SLID_OFF, n
                 if n == n_steps:
                     break
+                progress[0] = n + 1                   # row n is final
+                if n + 1 > gate[0]:                   # integrate beyond t_n only once the sinks allow it
+                    _wait_for_gate(gate, n + 1)
             if nc:
                 accumulate_sliding(ct, cs, ws[0], records[0], RK4_WEIGHTS[st] * dt)
         if n == n_steps:

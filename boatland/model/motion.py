@@ -75,14 +75,15 @@ class MotionArrays:
             contacts = no_contacts()
         elif not isinstance(contacts, Contacts):
             raise ValueError("contacts must be a boatland.contact.fender.Contacts (see contact_set)")
+        one_int64 = lambda a: isinstance(a, np.ndarray) and a.dtype == np.int64 and a.shape == (1,)  # noqa: E731
         if progress is None:
             progress = np.zeros(1, dtype=np.int64)
+        elif not one_int64(progress):
+            raise ValueError("progress must be a numpy int64 array of shape (1,)")
         if gate is None:
             gate = np.array([n_steps], dtype=np.int64)
-        elif not (isinstance(gate, np.ndarray) and gate.dtype == np.int64 and gate.shape == (1,)):
+        elif not one_int64(gate):
             raise ValueError("gate must be a numpy int64 array of shape (1,)")
-        elif not (isinstance(progress, np.ndarray) and progress.dtype == np.int64 and progress.shape == (1,)):
-            raise ValueError("progress must be a numpy int64 array of shape (1,)")
         nc = contacts[0].shape[0]
         if out is None:
             out = self.allocate_outputs(n_steps, nc)

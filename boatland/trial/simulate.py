@@ -236,8 +236,10 @@ def _run_watched(arrays, dt: float, n: int, kwargs: dict, progress, sinks, info:
     blocks) so that they catch up."""
     counter = np.zeros(1, dtype=np.int64)
     block = max(1, int(round(1.0 / dt)))
-    # the kernel may run at most one block ahead of what the sinks have taken (a killed run loses ≤ 1 s)
-    gate = np.array([block if sinks else n], dtype=np.int64)
+    # the kernel may run at most one block ahead of what the sinks have taken (a killed run loses ≤ 1 s):
+    # it waits having written row sent + block − 1, integrated to that row's time, while the sinks hold
+    # the rows before ``sent`` — and the block it waits for is complete
+    gate = np.array([block - 1 if sinks else n], dtype=np.int64)
     live = arrays.allocate_outputs(n, kwargs["contacts"][0].shape[0])
     box: dict = {}
 
@@ -263,7 +265,7 @@ def _run_watched(arrays, dt: float, n: int, kwargs: dict, progress, sinks, info:
             k1 = sent + (done - sent) // block * block
             _send(sinks, live, F, thrust, dt, sent, k1)
             sent = k1
-            gate[0] = sent + block           # the sinks have it: let the kernel run one more block
+            gate[0] = sent + block - 1       # the sinks have it: let the kernel run one more block
             continue
         if not alive:
             break
