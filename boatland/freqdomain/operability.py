@@ -31,7 +31,8 @@ import numpy as np
 
 from boatland.errors import BoatlandInputError, BoatlandWarning
 from boatland.freqdomain.screening import (ACCEPT_PRESETS, ACCESS_DURATION, LandingSetup, accept_probability,
-                                           limiting_hs, slip_transfer, spectral_moments)
+                                           distinct_events, limiting_hs, response_correlation, slip_transfer,
+                                           spectral_moments)
 from boatland.model.hydrodb import HydroDB
 from boatland.model.seastate import SpectrumPart
 
@@ -212,8 +213,10 @@ def availability(db: HydroDB, setup: LandingSetup, scatter: ScatterTable, *, acc
     tr = slip_transfer(db, setup, omega=omega, beta_deg=ub, method=method, mu=mu, thrust=thrust)
     h = db.water_depth if water_depth is None else water_depth
     m, captured = spectral_moments(tr, ut, sea=sea, water_depth=h, g=db.g)
+    keep = distinct_events(m[..., 0], tr.capacity, response_correlation(tr, ut, sea=sea, water_depth=h, g=db.g))
     table = limiting_hs(m, tr.capacity, ut, ub, accept=p_acc, statistics=statistics,
-                        access_duration=access_duration, method=method, captured=captured)
+                        access_duration=access_duration, method=method, captured=captured, names=tr.names,
+                        keep=keep)
     lim = table.Hs[it, ib]
     ok = scatter.Hs <= lim
     return Availability(availability=float(scatter.occurrence[ok].sum()), workable=ok, Hs_limit=lim, beta_deg=beta,

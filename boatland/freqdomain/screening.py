@@ -80,7 +80,7 @@ from boatland.model.seastate import SpectrumPart
 from boatland.waves.spectra import spreading_cos2s
 
 __all__ = ["ACCEPT_PRESETS", "ACCESS_DURATION", "MODES", "SHEAR_FACTORS", "LandingSetup", "LimitTable", "SeaResponse",
-           "ShearSweep", "SlipTransfer", "shear_sweep",
+           "ShearSweep", "SlipTransfer", "distinct_events", "response_correlation", "shear_sweep",
            "accept_probability", "incident_probability", "limiting_hs", "rayleigh_exceedance", "rice_rate",
            "screening_grid", "sea_response", "slip_transfer", "spectral_moments", "vanmarcke_rate"]
 
@@ -463,6 +463,77 @@ def spectral_moments(transfer: SlipTransfer, Tp, *, sea: SpectrumPart | None = N
     return m, captured
 
 
+#: Responses whose correlation reaches this are one event (:func:`distinct_events`).
+SAME_EVENT = 0.99
+
+
+def response_correlation(transfer: SlipTransfer, Tp, *, sea: SpectrumPart | None = None,
+                         water_depth: float = math.inf, g: float = 9.81) -> np.ndarray:
+    r"""Correlation coefficients of the responses (margins, roll) in each sea:
+    :math:`
+ho_{ij} = \int \mathrm{Re}(H_i ar H_j) S\,d\omega / (\sigma_i\sigma_j)`.
+
+    Returns
+    -------
+    ndarray, shape (NT, Nβ, R, R)
+    """
+    part = _part(sea)
+    T = np.atleast_1d(np.asarray(Tp, dtype=float))
+    w = transfer.omega
+    S = np.stack([dataclasses.replace(part, Hs=1.0, Tp=float(t)).spectrum(w, water_depth, g) for t in T])
+    wt = np.zeros_like(w)
+    dw = np.diff(w)
+    wt[:-1] += dw / 2
+    wt[1:] += dw / 2
+    H = transfer.H                                           # (Nw, Nβ, R)
+    cov = np.einsum("tw,w,wbi,wbj->tbij", S, wt, H, H.conj(), optimize=True).real
+    return _correlation(cov)
+
+
+def _correlation(cov: np.ndarray) -> np.ndarray:
+    sd = np.sqrt(np.clip(np.einsum("...ii->...i", cov), 0.0, None))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        rho = cov / (sd[..., :, None] * sd[..., None, :])
+    return np.nan_to_num(rho)
+
+
+def distinct_events(m0: np.ndarray, capacity: np.ndarray, correlation: np.ndarray,
+                    same: float = SAME_EVENT) -> np.ndarray:
+    r"""Which responses are events of their own: a response correlated at ρ ≥ ``same`` with one that is
+    at least as likely (smaller reliability index β = a/σ) exceeds its capacity only when that one does
+    — the same event — and is left out of the union. Two symmetric contacts in head seas have identical
+    margins (ρ = 1): counted twice, as independent events, they would double the incident rate. β is
+    proportional to 1/Hs for every response, so the choice does not depend on Hs. Roll (the last
+    response) is always kept.
+
+    Parameters
+    ----------
+    m0 : ndarray, shape (..., R)
+        Variances of the responses (any Hs).
+    capacity : ndarray, shape (R,)
+    correlation : ndarray, shape (..., R, R)
+
+    Returns
+    -------
+    ndarray of bool, shape (..., R)
+    """
+    with np.errstate(divide="ignore", invalid="ignore"):
+        beta = np.where(m0 > 0, capacity / np.sqrt(m0), np.inf)
+    keep = np.ones(m0.shape, bool)
+    flat_beta = beta.reshape(-1, beta.shape[-1])
+    flat_keep = keep.reshape(-1, beta.shape[-1])
+    flat_rho = correlation.reshape(-1, *correlation.shape[-2:])
+    for cell in range(flat_beta.shape[0]):
+        order = np.argsort(flat_beta[cell, :-1], kind="stable")
+        kept: list[int] = []
+        for i in order:
+            if any(flat_rho[cell, i, j] >= same for j in kept):
+                flat_keep[cell, i] = False
+            else:
+                kept.append(int(i))
+    return keep
+
+
 def rayleigh_exceedance(a, sigma) -> np.ndarray:
     r"""Probability that the peak of one cycle of a zero-mean narrow-band Gaussian process with standard
     deviation σ exceeds a (seed 002 eq. 3.36–3.37): :math:`P = e^{-a^2/2\sigma^2}`, 1 for a ≤ 0."""
@@ -509,7 +580,7 @@ def vanmarcke_rate(a, m0, m1, m2, two_sided: bool = False) -> np.ndarray:
 
 
 def incident_probability(Hs, m: np.ndarray, capacity: np.ndarray, Tp, *, statistics: str = "rayleigh",
-                         access_duration: float = ACCESS_DURATION) -> tuple[np.ndarray, np.ndarray]:
+                         access_duration: float = ACCESS_DURATION, keep=None) -> tuple[np.ndarray, np.ndarray]:
     r"""Probability of an incident (any slip mode or roll) per wave cycle and per access.
 
     ``"rayleigh"`` — seed 002 eq. 3.80 per cycle of Tp, :math:`P_{cyc} = 1-\prod_i(1-e^{-a_i^2/2\sigma_i^2})`;
@@ -529,6 +600,8 @@ def incident_probability(Hs, m: np.ndarray, capacity: np.ndarray, Tp, *, statist
     statistics : {"rayleigh", "rice", "vanmarcke"}
     access_duration : float
         t_acc [s].
+    keep : ndarray of bool, shape (NT, Nβ, R), optional
+        The responses that are events of their own (:func:`distinct_events`); default all.
 
     Returns
     -------
@@ -543,8 +616,9 @@ def incident_probability(Hs, m: np.ndarray, capacity: np.ndarray, Tp, *, statist
     Hs = np.asarray(Hs, dtype=float)[..., None]
     T = np.asarray(Tp, dtype=float)[:, None]
     m0 = m[..., 0] * Hs ** 2
+    on = 1.0 if keep is None else np.asarray(keep, dtype=float)
     if statistics == "rayleigh":
-        p = rayleigh_exceedance(capacity, np.sqrt(m0))
+        p = rayleigh_exceedance(capacity, np.sqrt(m0)) * on
         p_cycle = 1.0 - np.prod(1.0 - p, axis=-1)
         with np.errstate(divide="ignore"):
             p_access = -np.expm1(access_duration / T * np.log1p(-np.minimum(p_cycle, 1.0)))
@@ -558,6 +632,7 @@ def incident_probability(Hs, m: np.ndarray, capacity: np.ndarray, Tp, *, statist
         nu = np.concatenate([vanmarcke_rate(capacity[:-1], m0[..., :-1], m1[..., :-1], m2[..., :-1]),
                              vanmarcke_rate(capacity[-1:], m0[..., -1:], m1[..., -1:], m2[..., -1:], two_sided=True)],
                             axis=-1)
+    nu = nu * on
     total = nu.sum(axis=-1)
     return -np.expm1(-total * T), -np.expm1(-total * access_duration), nu
 
@@ -602,7 +677,7 @@ class LimitTable:
 
 def limiting_hs(m: np.ndarray, capacity: np.ndarray, Tp, beta_deg, *, accept=ACCEPT_PRESETS["best"],
                 statistics: str = "rayleigh", access_duration: float = ACCESS_DURATION, method: str = "improved",
-                captured=None, names=None) -> LimitTable:
+                captured=None, names=None, keep=None) -> LimitTable:
     r"""Limiting Hs per (Tp, β): the largest Hs whose incident probability is accepted.
 
     ``"rayleigh"``: :math:`P_{inc}(H_s) \le P_{facc}\,T_p/t_{acc}` (seed 002 eq. 3.38–3.40, 3.80);
@@ -631,7 +706,8 @@ def limiting_hs(m: np.ndarray, capacity: np.ndarray, Tp, beta_deg, *, accept=ACC
         target = np.full(m.shape[:2], p_acc)
 
     def excess(h):
-        pc, pa, _ = incident_probability(h, m, capacity, T, statistics=statistics, access_duration=access_duration)
+        pc, pa, _ = incident_probability(h, m, capacity, T, statistics=statistics, access_duration=access_duration,
+                                         keep=keep)
         return (pc if statistics == "rayleigh" else pa) - target
 
     lo = np.full(m.shape[:2], math.log(1e-3))
@@ -645,7 +721,7 @@ def limiting_hs(m: np.ndarray, capacity: np.ndarray, Tp, beta_deg, *, accept=ACC
         lo = np.where(bad, lo, mid)
     Hs = np.where(never, np.inf, np.where(always, 0.0, np.exp(lo)))
     _, _, per = incident_probability(np.where(np.isfinite(Hs) & (Hs > 0), Hs, 1.0), m, capacity, T,
-                                     statistics=statistics, access_duration=access_duration)
+                                     statistics=statistics, access_duration=access_duration, keep=keep)
     names = np.array(response_names(capacity.shape[-1]) if names is None else names)
     governing = names[np.argmax(per, axis=-1)]
     cap = np.ones(T.size) if captured is None else np.asarray(captured)
@@ -694,8 +770,10 @@ def screening_grid(db: HydroDB, setup: LandingSetup, Tp, beta_deg=None, *, accep
     tr = slip_transfer(db, setup, omega=omega, beta_deg=beta_deg, method=method, mu=mu, thrust=thrust)
     h = db.water_depth if water_depth is None else water_depth
     m, captured = spectral_moments(tr, Tp, sea=sea, water_depth=h, g=db.g)
+    keep = distinct_events(m[..., 0], tr.capacity, response_correlation(tr, Tp, sea=sea, water_depth=h, g=db.g))
     return limiting_hs(m, tr.capacity, Tp, tr.beta_deg, accept=accept, statistics=statistics,
-                       access_duration=access_duration, method=method, captured=captured, names=tr.names)
+                       access_duration=access_duration, method=method, captured=captured, names=tr.names,
+                       keep=keep)
 
 
 # --------------------------------------------------------------------------------------- one given sea
@@ -783,9 +861,11 @@ def sea_response(db: HydroDB, setup: LandingSetup, parts, *, water_depth: float 
     wt[:-1] += dw / 2
     wt[1:] += dw / 2
     m = np.einsum("bw,w,wbr,wk->rk", S, wt, np.abs(tr.H) ** 2, w[:, None] ** np.arange(3)[None, :])
+    cov = np.einsum("bw,w,wbi,wbj->ij", S, wt, tr.H, tr.H.conj()).real
+    keep = distinct_events(m[None, None, :, 0], tr.capacity, _correlation(cov)[None, None])
     Tc = parts[int(np.argmax([p.Hs for p in parts]))].Tp
     pc, pa, _ = incident_probability(1.0, m[None, None], tr.capacity, [Tc], statistics=statistics,
-                                     access_duration=access_duration)
+                                     access_duration=access_duration, keep=keep)
     return SeaResponse(sigma=np.sqrt(m[:, 0]), m=m, capacity=tr.capacity, names=tr.names, p_cycle=float(pc[0, 0]),
                        p_access=float(pa[0, 0]), cycle_period=float(Tc), statistics=statistics, method=method)
 
