@@ -185,8 +185,11 @@ class Result(TrialSeries):
                 f"  all contacts touching {100 * s['contact_fraction']:.1f} % of the time",
             ]
         lines.append("  max motions          " + ", ".join(f"{k} {v:.3g}" for k, v in s["max_motions"].items()))
+        if self.mode.shape[1] and self.settled_at > 0:
+            lines.append(f"  settled at t = {self.settled_at:g} s (thrust on; slides before it are not slips), waves "
+                         f"at full height from t = {self.exposure_from:g} s")
         for name, t in s["incidents"].items():
-            lines.append(f"  incident {name:14s}" + ("no" if t is None else f"at t = {t:.2f} s"))
+            lines.append(f"  incident {name:21s}" + ("no" if t is None else f"at t = {t:.2f} s"))
         for e in self.events[:12]:
             lines.append(f"  event: {e.text()}")
         if len(self.events) > 12:
