@@ -245,27 +245,42 @@ def prepare_cases(campaign: Campaign, load_database, cases=None) -> dict[int, Ca
         hull inside the pile, ...) is left out: its trials then make everything themselves and record
         the same error as before.
     """
-    from boatland.trial.simulate import motion_arrays, pile_tables
+    prepared = _CasePreparation(campaign, load_database)
+    return {case: data for case in (range(len(campaign.cases)) if cases is None else cases)
+            if (data := prepared.get(case)) is not None}
 
-    checked = _checked(campaign, load_database)
-    cases = range(len(campaign.cases)) if cases is None else cases
-    out: dict[int, CaseData] = {}
-    arrays: dict = {}
-    with warnings.catch_warnings(), single_threaded():
-        warnings.simplefilter("ignore")
-        for case in cases:
-            try:
-                sc = campaign.scenario_for(_first_trial(campaign, case))
-                dbkey = str(sc.vessel.database_path or sc.vessel.database)
-                db, rad = checked["dbs"][dbkey], sc.radiation
-                mkey = _memory_key(dbkey, rad)
-                akey = (mkey, sc.time_step(db))
-                if akey not in arrays:
-                    arrays[akey] = motion_arrays(sc, db, checked["memories"][mkey])
-                out[case] = CaseData(arrays=arrays[akey], tables=tuple(pile_tables(sc, db)))
-            except Exception:  # noqa: BLE001 — the trials meet it again and record it
-                continue
-    return out
+
+class _CasePreparation:
+    """case → :class:`CaseData` (or None), made the first time it is asked for — when the first trial of the
+    case is handed to the executor, so that the workers start on the first case while the next ones are
+    prepared. Kernel arrays are compiled once per radiation memory and time step."""
+
+    def __init__(self, campaign: Campaign, load_database):
+        self.campaign, self.checked = campaign, _checked(campaign, load_database)
+        self.cases: dict = {}
+        self.arrays: dict = {}
+
+    def get(self, case: int) -> CaseData | None:
+        if case not in self.cases:
+            with warnings.catch_warnings(), single_threaded():
+                warnings.simplefilter("ignore")
+                try:
+                    self.cases[case] = self._prepare(case)
+                except Exception:  # noqa: BLE001 — its trials meet it again and record it
+                    self.cases[case] = None
+        return self.cases[case]
+
+    def _prepare(self, case: int) -> CaseData:
+        from boatland.trial.simulate import motion_arrays, pile_tables
+
+        sc = self.campaign.scenario_for(_first_trial(self.campaign, case))
+        dbkey = str(sc.vessel.database_path or sc.vessel.database)
+        db = self.checked["dbs"][dbkey]
+        mkey = _memory_key(dbkey, sc.radiation)
+        akey = (mkey, sc.time_step(db))
+        if akey not in self.arrays:
+            self.arrays[akey] = motion_arrays(sc, db, self.checked["memories"][mkey])
+        return CaseData(arrays=self.arrays[akey], tables=tuple(pile_tables(sc, db)))
 
 
 def completed(table: np.ndarray) -> np.ndarray:
@@ -352,9 +367,9 @@ def run_campaign(campaign: Campaign, store_path: str | Path, *, loaders, executo
         inline = executor == "local" and (workers or os.cpu_count() or 1) == 1
         screening = _BackgroundScreening(campaign, loaders) if todo and not inline else None
         try:
-            shared = prepare_cases(campaign, loaders[1], sorted({s.case for s in todo}))
+            shared = _CasePreparation(campaign, loaders[1])   # each case's data when its first trial is sent
             if todo and executor == "local":        # forked workers inherit the campaign and databases
-                _context(source, loaders)["db"].update(_checked(campaign, loaders[1])["dbs"])
+                _context(source, loaders)["db"].update(shared.checked["dbs"])
             rows = _execute(todo, (source, loaders, keep), executor, workers, scheduler, connect_timeout, shared)
             try:
                 for row in rows:
@@ -450,9 +465,10 @@ def _screening(campaign: Campaign, loaders) -> tuple[np.ndarray, list[str]]:
 
 def _execute(todo, args, executor, workers, scheduler, connect_timeout, shared=None):
     """Run the trials ``todo`` and yield their rows as they finish; ``shared``: case → :class:`CaseData`
-    (:func:`prepare_cases`), shipped with each trial of the case."""
+    (``shared.get(case)``: a dict from :func:`prepare_cases`, or made on demand), shipped with each trial
+    of the case."""
     source, loaders, keep = args
-    shared = shared or {}
+    shared = {} if shared is None else shared
     if not todo:
         return
     if executor == "dask":
@@ -546,9 +562,13 @@ def _execute_dask(todo, args, scheduler, connect_timeout, shared):
         raise BoatlandInputError(f"--scheduler {scheduler}: no Dask scheduler answered within "
                                  f"{connect_timeout:g} s ({type(exc).__name__}); is it running?") from None
     try:
-        data = {case: client.scatter(d, hash=False) for case, d in shared.items()}   # one copy per case
-        futures = client.map(execute_trial, [source] * len(todo), todo, [loaders] * len(todo),
-                             [keep] * len(todo), [data.get(s.case) for s in todo], pure=False)
+        data: dict = {}                           # one scattered copy of each case's data
+        futures = []
+        for spec in todo:
+            if spec.case not in data:
+                d = shared.get(spec.case)
+                data[spec.case] = None if d is None else client.scatter(d, hash=False)
+            futures.append(client.submit(execute_trial, source, spec, loaders, keep, data[spec.case], pure=False))
         for fut in as_completed(futures, loop=client.loop):
             yield fut.result()
     finally:

@@ -34,6 +34,7 @@ from __future__ import annotations
 
 import hashlib
 import math
+import weakref
 from dataclasses import dataclass
 
 import numpy as np
@@ -236,22 +237,51 @@ def _table_grid(db: HydroDB) -> np.ndarray:
     return np.arange(lo, float(db.omega[-1]) + TABLE_DOMEGA / 2, TABLE_DOMEGA)
 
 
+@dataclass(frozen=True, eq=False)
+class _TableLayout:
+    """:func:`_layout` of one database and layout, its table grid and the content key of its tables
+    without the direction."""
+
+    a: float
+    h: float
+    pos: np.ndarray
+    N: np.ndarray
+    xg: np.ndarray
+    grid: np.ndarray
+    key: tuple
+
+
+#: Table layouts per database (weakly: they go with it) and arguments.
+_LAYOUTS: "weakref.WeakKeyDictionary[HydroDB, dict]" = weakref.WeakKeyDictionary()
+
+
+def _table_layout(db: HydroDB, position, heading_deg: float, pile_radius: float, water_depth) -> _TableLayout:
+    """The validated layout (:func:`_layout`), the ω grid and the tables' content key, kept per database
+    and arguments: a campaign's trials of one layout look them up instead of rebuilding the panels."""
+    args = (tuple(float(v) for v in np.asarray(position, dtype=float).reshape(-1)), float(heading_deg),
+            float(pile_radius), None if water_depth is None else float(water_depth))
+    per_db = _LAYOUTS.setdefault(db, {})
+    if args not in per_db:
+        a, h, pos, N, xg = _layout(db, position, heading_deg, pile_radius, water_depth)
+        grid = _table_grid(db)
+        digest = hashlib.blake2b(digest_size=16)
+        for arr in (N, xg, grid):
+            digest.update(np.ascontiguousarray(arr, dtype=float).tobytes())
+        key = (digest.hexdigest(), float(db.g), float(db.rho), float(pos[0]), float(pos[1]), float(heading_deg),
+               float(a), float(h))
+        if len(per_db) >= TABLE_CACHE_SIZE:
+            per_db.pop(next(iter(per_db)))
+        per_db[args] = _TableLayout(a, h, pos, N, xg, grid, key)
+    return per_db[args]
+
+
 def pile_table_key(db: HydroDB, position, heading_deg: float, pile_radius: float, theta: float,
                    water_depth: float | None = None) -> tuple:
     """What the table of direction ``theta`` [rad, global] is made from, by content: a digest of the hull
     panels in the global frame (centroids, generalised normals × areas) and of the ω grid, then g, ρ,
     the position relative to the pile, the heading, the radius, the depth and θ. Arguments as
     :func:`pile_scattered_excitation`."""
-    a, h, pos, N, xg = _layout(db, position, heading_deg, pile_radius, water_depth)
-    return _key(db, a, h, pos, heading_deg, N, xg, _table_grid(db), theta)
-
-
-def _key(db, a, h, pos, heading_deg, N, xg, grid, theta) -> tuple:
-    digest = hashlib.blake2b(digest_size=16)
-    for arr in (N, xg, grid):
-        digest.update(np.ascontiguousarray(arr, dtype=float).tobytes())
-    return (digest.hexdigest(), float(db.g), float(db.rho), float(pos[0]), float(pos[1]), float(heading_deg),
-            float(a), float(h), float(theta))
+    return (*_table_layout(db, position, heading_deg, pile_radius, water_depth).key, float(theta))
 
 
 def _remember(table: ScatteredTable) -> None:
@@ -273,20 +303,20 @@ def scattered_tables(db: HydroDB, position, heading_deg: float, pile_radius: flo
     """The tables of :func:`pile_scattered_interpolated` for each distinct direction in ``theta`` [rad,
     global], from this process's cache or computed (and cached): 0.5–1 s each for a 24 m CTV's mesh.
     Arguments as :func:`pile_scattered_excitation`."""
-    a, h, pos, N, xg = _layout(db, position, heading_deg, pile_radius, water_depth)
-    grid = _table_grid(db)
-    return [_table(db, position, heading_deg, pile_radius, water_depth, a, h, pos, N, xg, grid, float(t))
+    layout = _table_layout(db, position, heading_deg, pile_radius, water_depth)
+    return [_table(db, position, heading_deg, pile_radius, water_depth, layout, float(t))
             for t in np.unique(np.asarray(theta, dtype=float))]
 
 
-def _table(db, position, heading_deg, pile_radius, water_depth, a, h, pos, N, xg, grid, t) -> ScatteredTable:
-    key = _key(db, a, h, pos, heading_deg, N, xg, grid, t)
+def _table(db, position, heading_deg, pile_radius, water_depth, layout: _TableLayout, t: float) -> ScatteredTable:
+    key = (*layout.key, t)
     table = _TABLES.get(key)
     if table is None:
+        pos, grid = layout.pos, layout.grid
         d = pos[0] * math.cos(t) + pos[1] * math.sin(t)
         Xs = pile_scattered_components(db, position, heading_deg, pile_radius, grid, np.full(grid.size, t),
                                        water_depth)
-        table = ScatteredTable(key, grid, Xs * np.exp(-1j * wavenumber(grid, h, db.g) * d)[None, :], d)
+        table = ScatteredTable(key, grid, Xs * np.exp(-1j * wavenumber(grid, layout.h, db.g) * d)[None, :], d)
         _remember(table)
     return table
 
@@ -305,13 +335,13 @@ def pile_scattered_interpolated(db: HydroDB, position, heading_deg: float, pile_
     DOF from the exact sum, at 0.9 s for the table against 1.5 s for the exact sum of 400 components.
     Components above the database's band get zero (their excitation is zero too).
     """
-    a, h, pos, N, xg = _layout(db, position, heading_deg, pile_radius, water_depth)
+    layout = _table_layout(db, position, heading_deg, pile_radius, water_depth)
     om = np.asarray(omega, dtype=float)
     th = np.asarray(theta, dtype=float)
     out = np.zeros((6, om.size), dtype=complex)
-    grid = _table_grid(db)
+    grid, h = layout.grid, layout.h
     for t in np.unique(th):
-        table = _table(db, position, heading_deg, pile_radius, water_depth, a, h, pos, N, xg, grid, float(t))
+        table = _table(db, position, heading_deg, pile_radius, water_depth, layout, float(t))
         reduced, d = table.reduced, table.d
         sel = (th == t) & (om <= grid[-1])
         w = om[sel]
