@@ -53,6 +53,7 @@ from boatland.campaign.stats import clopper_pearson, exponential_mean_interval
 from boatland.campaign.store import INCIDENT_PREFIX, CampaignStore
 from boatland.errors import BoatlandInputError
 from boatland.integrate.cummins import OUTCOME_STATUSES
+from boatland.model.motion import MotionArrays
 from boatland.reproducible import single_threaded
 from boatland.trial.simulate import exposure_start
 
@@ -78,7 +79,7 @@ class CaseData:
         (:func:`boatland.trial.simulate.pile_tables`; empty without a pile or for short-crested seas).
     """
 
-    arrays: object
+    arrays: MotionArrays
     tables: tuple = ()
 
 
@@ -482,7 +483,7 @@ def _execute(todo, args, executor, workers, scheduler, connect_timeout, shared=N
             yield execute_trial(source, spec, loaders, keep, shared.get(spec.case))
         return
     import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor, as_completed
+    from concurrent.futures import ProcessPoolExecutor
 
     # fork where there is one (Linux): no re-import per worker and no `if __name__ == "__main__"`
     # guard needed in a user's script; the workers inherit the compiled kernels' cache state
@@ -491,9 +492,8 @@ def _execute(todo, args, executor, workers, scheduler, connect_timeout, shared=N
                                initializer=_worker_init, initargs=(os.getpid(),))
     futures = []
     try:
-        futures = [pool.submit(execute_trial, source, spec, loaders, keep, shared.get(spec.case)) for spec in todo]
-        for fut in as_completed(futures):
-            yield fut.result()
+        yield from _submitted(todo, futures, lambda spec: pool.submit(execute_trial, source, spec, loaders, keep,
+                                                                      shared.get(spec.case)))
     except BaseException:          # the consumer stopped (an error, Ctrl-C): cancel, stop the workers now
         for fut in futures:
             fut.cancel()
@@ -505,6 +505,25 @@ def _execute(todo, args, executor, workers, scheduler, connect_timeout, shared=N
             p.join(5.0)
         raise
     pool.shutdown(wait=True)
+
+
+def _submitted(todo, futures: list, submit):
+    """Submit every trial of ``todo`` (``submit(spec)`` → a future, appended to ``futures``) and yield the
+    rows as they finish — those that finish while later trials are still being submitted (a case's data
+    is made when its first trial is sent) as well."""
+    import queue
+
+    finished: queue.SimpleQueue = queue.SimpleQueue()
+    handed = 0
+    for spec in todo:
+        fut = submit(spec)
+        futures.append(fut)
+        fut.add_done_callback(finished.put)
+        while not finished.empty():
+            handed += 1
+            yield finished.get().result()
+    for _ in range(len(futures) - handed):
+        yield finished.get().result()
 
 
 def _worker_init(parent: int) -> None:
@@ -553,7 +572,7 @@ def _execute_dask(todo, args, scheduler, connect_timeout, shared):
     if not scheduler:
         raise BoatlandInputError("the Dask executor needs a scheduler address (--scheduler tcp://host:port)")
     try:
-        from distributed import Client, as_completed
+        from distributed import Client
     except ImportError:
         raise BoatlandInputError("the Dask executor needs dask.distributed: pip install 'dask[distributed]'") from None
     try:
@@ -563,14 +582,14 @@ def _execute_dask(todo, args, scheduler, connect_timeout, shared):
                                  f"{connect_timeout:g} s ({type(exc).__name__}); is it running?") from None
     try:
         data: dict = {}                           # one scattered copy of each case's data
-        futures = []
-        for spec in todo:
+
+        def submit(spec):
             if spec.case not in data:
                 d = shared.get(spec.case)
                 data[spec.case] = None if d is None else client.scatter(d, hash=False)
-            futures.append(client.submit(execute_trial, source, spec, loaders, keep, data[spec.case], pure=False))
-        for fut in as_completed(futures, loop=client.loop):
-            yield fut.result()
+            return client.submit(execute_trial, source, spec, loaders, keep, data[spec.case], pure=False)
+
+        yield from _submitted(todo, [], submit)
     finally:
         client.close()
 
