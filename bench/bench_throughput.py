@@ -2,7 +2,9 @@
 in one run, for 600, 1,800 and 10,000-s accesses on 1 and 2 workers — the last row of 2 workers is the
 seed-002 study size end to end (72 trials × 10,000 s, 9 sea states; SIMO: 45 min per sea state).
 
-Run: ``python bench/bench_throughput.py [--accesses 600 1800 10000] [--rounds 2]``. Prints Markdown.
+Run: ``python bench/bench_throughput.py [--accesses 600 1800 10000] [--rounds 2] [--before CHECKOUT]``
+(``--before``: every campaign row again with another checkout, e.g. ``git archive ba34c7f`` unpacked,
+right after it — before/after in the same run). Prints Markdown.
 
 The study: ``scenarios/campaigns/table414.toml``'s shape — ctv24, 80 kN, Hs 0.3 m, Tp 5/7/9 s ×
 180/135/90° (9 sea states), 8 seeds (72 trials), state-space memory, the pile's scattered wave —
@@ -144,12 +146,13 @@ def profile_trial(source, spec, loaders, shared):
     return total, parts
 
 
-def campaign(path: Path, store: Path, workers: int):
-    """(wall, CPU of the process tree) of the real CLI."""
+def campaign(path: Path, store: Path, workers: int, code: Path = REPO):
+    """(wall, CPU of the process tree) of the real CLI of the checkout ``code``."""
+    env = dict(os.environ, PYTHONPATH=str(code))
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     t = time.perf_counter()
     r = subprocess.run([sys.executable, "-m", "boatland", "campaign", str(path), "-o", str(store),
-                        "--workers", str(workers)], capture_output=True, text=True, env=dict(os.environ))
+                        "--workers", str(workers)], capture_output=True, text=True, env=env, cwd=str(code))
     wall = time.perf_counter() - t
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     if r.returncode:
@@ -168,6 +171,8 @@ def main() -> None:
     ap.add_argument("--rounds", type=int, default=2, help="rounds of the per-trial timing (best per case)")
     ap.add_argument("--seeds", type=int, default=8, help="seeds per case of the campaigns (8: 72 trials)")
     ap.add_argument("--workers", type=int, nargs="*", default=[1, 2], help="campaign rows (none: per trial only)")
+    ap.add_argument("--before", type=Path, metavar="CHECKOUT",
+                    help="also run each campaign with this checkout of boatland (e.g. an older commit), right after")
     args = ap.parse_args()
     import numba
     import scipy
@@ -179,6 +184,8 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
         campaign(study_file(tmp, 30.0, 1), tmp / "warm.h5", 2)          # numba caches warm
+        if args.before:
+            campaign(study_file(tmp, 30.0, 1), tmp / "warm_before.h5", 2, args.before)
         rows, kernel_rate, profile = [], {}, None
         print("| access [s] | steps per trial (mean) | kernel steps/s (CPU) | trial steps/s (CPU) | trial / kernel "
               "| trial cost per simulated s [ms] | load |")
@@ -202,9 +209,10 @@ def main() -> None:
             print("|---|---|---|")
             for name, t in parts:
                 print(f"| {name} | {t:.3f} | {100 * t / total:.1f} % |")
-        print("\n| access [s] | trials × steps | workers | wall [s] | CPU [s] | campaign steps/s | "
+        print("\n| access [s] | trials × steps | workers | code | wall [s] | CPU [s] | campaign steps/s | "
               "÷ (workers × kernel steps/s) | load |")
-        print("|---|---|---|---|---|---|---|---|")
+        print("|---|---|---|---|---|---|---|---|---|")
+        codes = [("this", REPO)] + ([(f"before: {args.before.name}", args.before)] if args.before else [])
         from boatland.campaign.plan import load_campaign
 
         for access in args.accesses:
@@ -213,12 +221,14 @@ def main() -> None:
             db = load()[1](c.base)
             steps = sum(c.scenario_for(s).n_steps(db) for s in c.trials())
             for workers in args.workers:
-                load0 = load_text()
-                wall, cpu = campaign(path, tmp / f"c{access:g}_{workers}.h5", workers)
-                rate = steps / wall
-                print(f"| {access:,.0f} | {c.n_trials} × {steps / c.n_trials:,.0f} | {workers} | {wall:.1f} | "
-                      f"{cpu:.1f} | {rate:,.0f} | {100 * rate / (workers * kernel_rate[access]):.0f} % | "
-                      f"{load0} → {load_text()} |", flush=True)
+                for label, code in codes:
+                    load0 = load_text()
+                    wall, cpu = campaign(path, tmp / f"c{access:g}_{workers}_{len(label)}.h5", workers, code)
+                    rate = steps / wall
+                    print(f"| {access:,.0f} | {c.n_trials} × {steps / c.n_trials:,.0f} | {workers} | {label} | "
+                          f"{wall:.1f} | {cpu:.1f} | {rate:,.0f} | "
+                          f"{100 * rate / (workers * kernel_rate[access]):.0f} % | {load0} → {load_text()} |",
+                          flush=True)
 
 
 if __name__ == "__main__":
