@@ -9,21 +9,38 @@ BLAS thread, a local process with one per core, so the same campaign gave differ
 
 :func:`single_threaded` pins the BLAS/LAPACK and OpenMP thread pools of the process to one thread
 while a computation whose round-off reaches results runs (threadpoolctl does it for every library
-it finds loaded); the previous limits are restored afterwards. It nests, and costs about a
-millisecond per entry. Bits still depend on the CPU's instruction set where a library dispatches on it
-(OpenBLAS kernels, numpy's SIMD transcendental functions): identical machines give identical bits.
+it finds loaded); the previous limits are restored afterwards. It nests. Finding the libraries (a scan
+of every shared object loaded, 1–5 ms) is done once and again only when modules have been imported
+since — a new BLAS or OpenMP runtime comes with an import — so an entry costs tens of µs (a
+campaign worker enters once per trial). Bits still depend on the CPU's instruction set where a library
+dispatches on it (OpenBLAS kernels, numpy's SIMD transcendental functions): identical machines give
+identical bits.
 """
 
 from __future__ import annotations
 
 import contextlib
 import functools
+import sys
 import threading
 from typing import Iterator
 
 __all__ = ["single_threaded", "pinned"]
 
 _depth = threading.local()
+_found: list = [None, -1]   # [threadpoolctl.ThreadpoolController, len(sys.modules) when it scanned]
+_found_lock = threading.Lock()
+
+
+def _controller():
+    """The thread pools of the loaded libraries, scanned again whenever modules were imported since."""
+    with _found_lock:
+        if _found[0] is None or _found[1] != len(sys.modules):
+            from threadpoolctl import ThreadpoolController
+
+            _found[0] = ThreadpoolController()
+            _found[1] = len(sys.modules)            # counted after the imports above
+        return _found[0]
 
 
 @contextlib.contextmanager
@@ -36,11 +53,9 @@ def single_threaded() -> Iterator[None]:
         finally:
             _depth.n -= 1
         return
-    from threadpoolctl import threadpool_limits
-
     _depth.n = 1
     try:
-        with threadpool_limits(limits=1):
+        with _controller().limit(limits=1):
             yield
     finally:
         _depth.n = 0

@@ -34,7 +34,7 @@ from __future__ import annotations
 import hashlib
 import itertools
 import json
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -138,6 +138,7 @@ class Campaign:
     keep_series: tuple
     document: dict
     access: float | None = None
+    _exposure: dict = field(default_factory=dict, repr=False)   # case → exposure_start (scenario_for)
 
     @property
     def cases(self) -> list[Case]:
@@ -154,13 +155,15 @@ class Campaign:
                 for c in range(len(self.cases)) for k in range(self.seeds)]
 
     def scenario_for(self, spec: TrialSpec) -> Scenario:
-        """The trial's scenario: the base with its case's axis values and its seed."""
+        """The trial's scenario: the base with its case's axis values and its seed (and the duration of its
+        settling, wave ramp and the access) — validated once, as a file."""
         changes = dict(self.cases[spec.case].values)
         changes["simulation.seed"] = spec.seed
-        scenario = self.base.replace(changes)
         if self.access is not None:
-            scenario = scenario.replace({"simulation.duration": exposure_start(scenario) + self.access})
-        return scenario
+            if spec.case not in self._exposure:         # the settling and ramp: the same for every seed
+                self._exposure[spec.case] = exposure_start(self.base.replace(changes))
+            changes["simulation.duration"] = self._exposure[spec.case] + self.access
+        return self.base.replace(changes)
 
     def input_files(self) -> list[Path]:
         """Every file the campaign reads: the campaign file, the base scenario, and the database files and

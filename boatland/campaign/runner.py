@@ -19,6 +19,14 @@ outcome) are stored with their reason and left out of
 every probability; :func:`failures` lists them per case. Before any trial, every case's scenario gets
 the checks ``boatland run`` makes (:func:`check_cases`).
 
+Work done once per campaign, not per trial or worker: :func:`check_cases` makes each radiation memory
+(IRFs and state-space fit) once; :func:`prepare_cases` compiles the kernel arrays of each case from it
+and makes the ω tables of the pile's scattered wave its trials interpolate, once per case, in the
+campaign's process; every trial is shipped its case's :class:`CaseData` (local workers: with the task;
+Dask: one scattered copy per case), so no worker makes either again. They are the values a worker
+would have made (the same functions, pinned to one BLAS thread): the store is the same bit for bit.
+With several workers the frequency-domain screening runs in a process of its own beside the trials.
+
 Local workers die with the campaign: each sets ``PR_SET_PDEATHSIG`` (Linux) and watches its parent's
 pid, so neither SIGKILL nor SIGTERM of the campaign leaves workers running; a campaign stopped by an
 error (e.g. the disk is full) cancels the trials still queued.
@@ -34,22 +42,45 @@ import threading
 import time
 import traceback
 import warnings
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
 from boatland import __version__
-from boatland.campaign.plan import Campaign, TrialSpec, load_campaign
+from boatland.campaign.plan import Campaign, TrialSpec, load_campaign, trial_seed
 from boatland.campaign.stats import clopper_pearson, exponential_mean_interval
 from boatland.campaign.store import INCIDENT_PREFIX, CampaignStore
 from boatland.errors import BoatlandInputError
 from boatland.integrate.cummins import OUTCOME_STATUSES
+from boatland.model.motion import MotionArrays
 from boatland.reproducible import single_threaded
 from boatland.trial.simulate import exposure_start
 
-__all__ = ["run_campaign", "execute_trial", "incident_names", "case_statistics", "check_cases", "completed", "failures"]
+__all__ = ["run_campaign", "execute_trial", "incident_names", "case_statistics", "check_cases", "prepare_cases",
+           "CaseData", "completed", "failures"]
 
 _CACHE: dict = {}   # per worker process: campaign, databases and radiation memories
+_CHECKED: dict = {}  # per campaign process: what check_cases made, by (campaign digest, database loader)
+
+
+@dataclass(frozen=True, eq=False)
+class CaseData:
+    """What every trial of one case shares, made once per campaign (:func:`prepare_cases`) and shipped with
+    the trials to whichever worker runs them.
+
+    Attributes
+    ----------
+    arrays : MotionArrays
+        The kernel arrays compiled from the case's radiation memory, which :func:`check_cases` checked
+        at the case's landed modes (:func:`boatland.trial.simulate.motion_arrays`).
+    tables : tuple of ScatteredTable
+        The ω tables of the pile's scattered wave its trials interpolate
+        (:func:`boatland.trial.simulate.pile_tables`; empty without a pile or for short-crested seas).
+    """
+
+    arrays: MotionArrays
+    tables: tuple = ()
 
 
 def incident_names(campaign: Campaign) -> list[str]:
@@ -73,9 +104,16 @@ def _context(source: str, loaders):
     return _CACHE[key]
 
 
-def execute_trial(source: str, spec: TrialSpec, loaders, keep_dir: str | None = None) -> dict:
+def execute_trial(source: str, spec: TrialSpec, loaders, keep_dir: str | None = None,
+                  shared: CaseData | None = None) -> dict:
     """Run one trial of the campaign file ``source`` and return its summary row (never raises for a
-    failing trial: the row carries status −1 and the error)."""
+    failing trial: the row carries status −1 and the error).
+
+    ``shared``: its case's :class:`CaseData` from :func:`prepare_cases` (the memory checked there). Without
+    it the worker makes the radiation memory (once per worker), checks it (once per case) and compiles
+    the kernel arrays and the pile's tables itself — the same values.
+    """
+    from boatland.model.pile_diffraction import remember_tables
     from boatland.trial.simulate import BlowUpError, check_radiation, prepare_memory, simulate
 
     wall0 = time.perf_counter()
@@ -93,15 +131,20 @@ def execute_trial(source: str, spec: TrialSpec, loaders, keep_dir: str | None = 
             if dbkey not in ctx["db"]:
                 ctx["db"][dbkey] = loaders[1](scenario)
             db = ctx["db"][dbkey]
-            rad = scenario.radiation
-            mkey = (dbkey, rad.method, rad.memory, rad.tail, rad.taper)
-            if mkey not in ctx["memory"]:
-                ctx["memory"][mkey] = prepare_memory(scenario, db)
-            if spec.case not in ctx["checked"]:   # the memory damps this case's landed modes (once per case)
-                check_radiation(scenario, db, ctx["memory"][mkey], scenario.time_step(db))
-                ctx["checked"].add(spec.case)
+            if shared is not None:
+                remember_tables(shared.tables)
+                run = dict(arrays=shared.arrays)
+            else:
+                rad = scenario.radiation
+                mkey = _memory_key(dbkey, rad)
+                if mkey not in ctx["memory"]:
+                    ctx["memory"][mkey] = prepare_memory(scenario, db)
+                if spec.case not in ctx["checked"]:   # the memory damps this case's landed modes (once per case)
+                    check_radiation(scenario, db, ctx["memory"][mkey], scenario.time_step(db))
+                    ctx["checked"].add(spec.case)
+                run = dict(memory=ctx["memory"][mkey])
             try:
-                result = simulate(scenario, db, memory=ctx["memory"][mkey])
+                result = simulate(scenario, db, **run)
             except BlowUpError as exc:
                 result = exc.result
         row.update(_summary_row(result, result.exposure_from, scenario.simulation.duration, names))
@@ -118,6 +161,15 @@ def execute_trial(source: str, spec: TrialSpec, loaders, keep_dir: str | None = 
     return row
 
 
+def _memory_key(dbkey: str, rad) -> tuple:
+    """The radiation memory a scenario needs: its database and radiation settings."""
+    return (dbkey, rad.method, rad.memory, rad.tail, rad.taper)
+
+
+def _first_trial(campaign: Campaign, case: int) -> TrialSpec:
+    return TrialSpec(case * campaign.seeds, case, 0, trial_seed(campaign.master_seed, 0))
+
+
 def check_cases(campaign: Campaign, load_database) -> list[str]:
     """The checks ``boatland run`` makes, for every case's scenario, before any trial: the scenario
     against its database (:meth:`Scenario.check_against`: dt against the fender contact, the fender on
@@ -126,30 +178,41 @@ def check_cases(campaign: Campaign, load_database) -> list[str]:
 
     Returns the warnings (one line each, naming the case); raises :class:`SpecError` with every problem
     of every case (key paths prefixed by the case).
+
+    The radiation memories it makes are the ones the trials use (:func:`prepare_cases`); they and the
+    outcome are kept in this process for the same campaign (its :meth:`~Campaign.digest`: files and their
+    contents) and loader, so checking again (``run_campaign`` after the CLI) costs nothing.
     """
+    return list(_checked(campaign, load_database)["warnings"])
+
+
+def _checked(campaign: Campaign, load_database) -> dict:
+    """:func:`check_cases`'s work, kept: ``{"warnings", "dbs", "memories"}``."""
+    key = (campaign.digest(), load_database)
+    if key in _CHECKED:
+        return _CHECKED[key]
     from boatland.model.landed import check_memory
     from boatland.model.limits import scenario_problems
     from boatland.model.tomlspec import SpecError
     from boatland.trial.simulate import prepare_memory
 
     problems, warns, dbs = [], [], {}
+    memories: dict = {}
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        memories: dict = {}
         for case in campaign.cases:
-            sc = campaign.scenario_for(campaign.trials()[case.index * campaign.seeds])
-            key = str(sc.vessel.database_path or sc.vessel.database)
-            if key not in dbs:
-                dbs[key] = load_database(sc)
-            db = dbs[key]
+            sc = campaign.scenario_for(_first_trial(campaign, case.index))
+            dbkey = str(sc.vessel.database_path or sc.vessel.database)
+            if dbkey not in dbs:
+                dbs[dbkey] = load_database(sc)
+            db = dbs[dbkey]
             check = sc.check_against(db)
             where = f"case {case.index} ({case.label() or 'base'})"
             found = list(check.problems) + [p for p in scenario_problems(sc, db) if p not in check.problems]
             if not found and db.M is not None:     # the radiation memory damps this case's landed modes
-                rad = sc.radiation
-                mkey = (key, rad.method, rad.memory, rad.tail, rad.taper)
+                mkey = _memory_key(dbkey, sc.radiation)
                 if mkey not in memories:
-                    memories[mkey] = prepare_memory(sc, db)
+                    memories[mkey] = prepare_memory(sc, db)    # pinned to one BLAS thread, as in a trial
                 mc = check_memory(sc, db, memories[mkey], sc.time_step(db))
                 found += list(mc.problems)
                 warns += [f"{where}: {k}: {m}" for k, m in mc.warnings]
@@ -157,7 +220,68 @@ def check_cases(campaign: Campaign, load_database) -> list[str]:
             warns += [f"{where}: {k}: {m}" for k, m in check.warnings]
     if problems:
         raise SpecError(campaign.source, problems)
-    return list(dict.fromkeys(warns))
+    _CHECKED.clear()                               # one campaign at a time: bounded memory
+    _CHECKED[key] = {"warnings": tuple(dict.fromkeys(warns)), "dbs": dbs, "memories": memories}
+    return _CHECKED[key]
+
+
+def prepare_cases(campaign: Campaign, load_database, cases=None) -> dict[int, CaseData]:
+    """Each case's :class:`CaseData`, made once in this process: the kernel arrays from the radiation
+    memory :func:`check_cases` made and checked (it runs first if it has not), and the ω tables of the
+    pile's scattered wave (≈ 0.5–1 s each for the ctv24 mesh; one per layout and wave direction, shared by
+    the cases that have the same). Pinned to one BLAS thread, as a trial: the values a worker would make.
+
+    Parameters
+    ----------
+    campaign : Campaign
+    load_database : callable
+        ``load_database(scenario) -> HydroDB`` (the edge's loader).
+    cases : iterable of int, optional
+        The cases to prepare (default: all).
+
+    Returns
+    -------
+    dict
+        case → CaseData; a case whose preparation fails (a state-space pole too fast for its dt, the
+        hull inside the pile, ...) is left out: its trials then make everything themselves and record
+        the same error as before.
+    """
+    prepared = _CasePreparation(campaign, load_database)
+    return {case: data for case in (range(len(campaign.cases)) if cases is None else cases)
+            if (data := prepared.get(case)) is not None}
+
+
+class _CasePreparation:
+    """case → :class:`CaseData` (or None), made the first time it is asked for — when the first trial of the
+    case is handed to the executor, so that the workers start on the first case while the next ones are
+    prepared. Kernel arrays are compiled once per radiation memory and time step."""
+
+    def __init__(self, campaign: Campaign, load_database):
+        self.campaign, self.checked = campaign, _checked(campaign, load_database)
+        self.cases: dict = {}
+        self.arrays: dict = {}
+
+    def get(self, case: int) -> CaseData | None:
+        if case not in self.cases:
+            with warnings.catch_warnings(), single_threaded():
+                warnings.simplefilter("ignore")
+                try:
+                    self.cases[case] = self._prepare(case)
+                except Exception:  # noqa: BLE001 — its trials meet it again and record it
+                    self.cases[case] = None
+        return self.cases[case]
+
+    def _prepare(self, case: int) -> CaseData:
+        from boatland.trial.simulate import motion_arrays, pile_tables
+
+        sc = self.campaign.scenario_for(_first_trial(self.campaign, case))
+        dbkey = str(sc.vessel.database_path or sc.vessel.database)
+        db = self.checked["dbs"][dbkey]
+        mkey = _memory_key(dbkey, sc.radiation)
+        akey = (mkey, sc.time_step(db))
+        if akey not in self.arrays:
+            self.arrays[akey] = motion_arrays(sc, db, self.checked["memories"][mkey])
+        return CaseData(arrays=self.arrays[akey], tables=tuple(pile_tables(sc, db)))
 
 
 def completed(table: np.ndarray) -> np.ndarray:
@@ -240,21 +364,66 @@ def run_campaign(campaign: Campaign, store_path: str | Path, *, loaders, executo
         if progress:
             progress(total - len(todo), total)
         keep = str(store.series_dir) if campaign.keep_series else None
-        args = (str(Path(campaign.source).resolve()), loaders, keep)
-        rows = _execute(todo, args, executor, workers, scheduler, connect_timeout)
+        source = str(Path(campaign.source).resolve())
+        inline = executor == "local" and (workers or os.cpu_count() or 1) == 1
+        screening = _BackgroundScreening(campaign, loaders) if todo and not inline else None
         try:
-            for row in rows:
-                store.add(row)
-                if progress:
-                    progress(len(store.rows), total)
+            shared = _CasePreparation(campaign, loaders[1])   # each case's data when its first trial is sent
+            if todo and executor == "local":        # forked workers inherit the campaign and databases
+                _context(source, loaders)["db"].update(shared.checked["dbs"])
+            rows = _execute(todo, (source, loaders, keep), executor, workers, scheduler, connect_timeout, shared)
+            try:
+                for row in rows:
+                    store.add(row)
+                    if progress:
+                        progress(len(store.rows), total)
+            finally:
+                rows.close()               # an error above cancels the queued trials and stops the workers
+            p_fd, why = screening.result() if screening is not None else _screening_job(campaign, loaders)
         finally:
-            rows.close()               # an error above cancels the queued trials and stops the workers
-        with single_threaded():
-            p_fd, why = _screening(campaign, loaders)
+            if screening is not None:
+                screening.close()
         store.finish(case_statistics(campaign, store.table(), names, screening=p_fd, screening_notes=why))
     finally:
         store.close()
     return store
+
+
+def _screening_job(campaign: Campaign, loaders) -> tuple[np.ndarray, list[str]]:
+    with single_threaded():
+        return _screening(campaign, loaders)
+
+
+class _BackgroundScreening:
+    """:func:`_screening` in a process of its own, started before the trials: with several workers (or
+    Dask) it runs beside them instead of after them. Pinned to one BLAS thread like every trial, so its
+    figures are the ones the campaign's own process would compute; if the process cannot give them,
+    they are computed here."""
+
+    def __init__(self, campaign: Campaign, loaders):
+        import multiprocessing
+        from concurrent.futures import ProcessPoolExecutor
+
+        self.campaign, self.loaders = campaign, loaders
+        method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
+        self.pool = ProcessPoolExecutor(max_workers=1, mp_context=multiprocessing.get_context(method),
+                                        initializer=_worker_init, initargs=(os.getpid(),))
+        self.future = self.pool.submit(_screening_job, campaign, loaders)
+
+    def result(self) -> tuple[np.ndarray, list[str]]:
+        try:
+            return self.future.result()
+        except Exception:  # noqa: BLE001 — e.g. the process died: the campaign's own process computes it
+            return _screening_job(self.campaign, self.loaders)
+
+    def close(self) -> None:
+        """Stop the process now if it is still running (the campaign stopped early)."""
+        procs = [] if self.future.done() else list(getattr(self.pool, "_processes", {}).values())
+        self.pool.shutdown(wait=not procs, cancel_futures=True)
+        for proc in procs:
+            proc.kill()
+        for proc in procs:
+            proc.join(5.0)
 
 
 def _screening(campaign: Campaign, loaders) -> tuple[np.ndarray, list[str]]:
@@ -295,22 +464,26 @@ def _screening(campaign: Campaign, loaders) -> tuple[np.ndarray, list[str]]:
     return out, why
 
 
-def _execute(todo, args, executor, workers, scheduler, connect_timeout):
+def _execute(todo, args, executor, workers, scheduler, connect_timeout, shared=None):
+    """Run the trials ``todo`` and yield their rows as they finish; ``shared``: case → :class:`CaseData`
+    (``shared.get(case)``: a dict from :func:`prepare_cases`, or made on demand), shipped with each trial
+    of the case."""
     source, loaders, keep = args
+    shared = {} if shared is None else shared
     if not todo:
         return
     if executor == "dask":
-        yield from _execute_dask(todo, args, scheduler, connect_timeout)
+        yield from _execute_dask(todo, args, scheduler, connect_timeout, shared)
         return
     if executor != "local":
         raise BoatlandInputError(f"executor must be 'local' or 'dask', got {executor!r}")
     n = workers or os.cpu_count() or 1
     if n == 1:
         for spec in todo:
-            yield execute_trial(source, spec, loaders, keep)
+            yield execute_trial(source, spec, loaders, keep, shared.get(spec.case))
         return
     import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor, as_completed
+    from concurrent.futures import ProcessPoolExecutor
 
     # fork where there is one (Linux): no re-import per worker and no `if __name__ == "__main__"`
     # guard needed in a user's script; the workers inherit the compiled kernels' cache state
@@ -319,9 +492,8 @@ def _execute(todo, args, executor, workers, scheduler, connect_timeout):
                                initializer=_worker_init, initargs=(os.getpid(),))
     futures = []
     try:
-        futures = [pool.submit(execute_trial, source, spec, loaders, keep) for spec in todo]
-        for fut in as_completed(futures):
-            yield fut.result()
+        yield from _submitted(todo, futures, lambda spec: pool.submit(execute_trial, source, spec, loaders, keep,
+                                                                      shared.get(spec.case)))
     except BaseException:          # the consumer stopped (an error, Ctrl-C): cancel, stop the workers now
         for fut in futures:
             fut.cancel()
@@ -333,6 +505,25 @@ def _execute(todo, args, executor, workers, scheduler, connect_timeout):
             p.join(5.0)
         raise
     pool.shutdown(wait=True)
+
+
+def _submitted(todo, futures: list, submit):
+    """Submit every trial of ``todo`` (``submit(spec)`` → a future, appended to ``futures``) and yield the
+    rows as they finish — those that finish while later trials are still being submitted (a case's data
+    is made when its first trial is sent) as well."""
+    import queue
+
+    finished: queue.SimpleQueue = queue.SimpleQueue()
+    handed = 0
+    for spec in todo:
+        fut = submit(spec)
+        futures.append(fut)
+        fut.add_done_callback(finished.put)
+        while not finished.empty():
+            handed += 1
+            yield finished.get().result()
+    for _ in range(len(futures) - handed):
+        yield finished.get().result()
 
 
 def _worker_init(parent: int) -> None:
@@ -376,12 +567,12 @@ def _check_scheduler_address(scheduler: str | None) -> None:
                                  "tcp://HOST:PORT (e.g. tcp://127.0.0.1:8786)")
 
 
-def _execute_dask(todo, args, scheduler, connect_timeout):
+def _execute_dask(todo, args, scheduler, connect_timeout, shared):
     source, loaders, keep = args
     if not scheduler:
         raise BoatlandInputError("the Dask executor needs a scheduler address (--scheduler tcp://host:port)")
     try:
-        from distributed import Client, as_completed
+        from distributed import Client
     except ImportError:
         raise BoatlandInputError("the Dask executor needs dask.distributed: pip install 'dask[distributed]'") from None
     try:
@@ -390,10 +581,15 @@ def _execute_dask(todo, args, scheduler, connect_timeout):
         raise BoatlandInputError(f"--scheduler {scheduler}: no Dask scheduler answered within "
                                  f"{connect_timeout:g} s ({type(exc).__name__}); is it running?") from None
     try:
-        futures = client.map(execute_trial, [source] * len(todo), todo, [loaders] * len(todo),
-                             [keep] * len(todo), pure=False)
-        for fut in as_completed(futures, loop=client.loop):
-            yield fut.result()
+        data: dict = {}                           # one scattered copy of each case's data
+
+        def submit(spec):
+            if spec.case not in data:
+                d = shared.get(spec.case)
+                data[spec.case] = None if d is None else client.scatter(d, hash=False)
+            return client.submit(execute_trial, source, spec, loaders, keep, data[spec.case], pure=False)
+
+        yield from _submitted(todo, [], submit)
     finally:
         client.close()
 

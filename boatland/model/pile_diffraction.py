@@ -32,7 +32,10 @@ Assumptions
 
 from __future__ import annotations
 
+import hashlib
 import math
+import weakref
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -42,7 +45,8 @@ from boatland.model.hydrodb import HydroDB
 from boatland.waves.diffraction import TOL, cylinder_field
 from boatland.waves.dispersion import wavenumber
 
-__all__ = ["pile_scattered_excitation", "pile_scattered_components", "hull_panels_global"]
+__all__ = ["pile_scattered_excitation", "pile_scattered_components", "pile_scattered_interpolated",
+           "hull_panels_global", "ScatteredTable", "scattered_tables", "remember_tables", "pile_table_key"]
 
 
 def _panels(db: HydroDB):
@@ -194,14 +198,135 @@ def pile_scattered_components(db: HydroDB, position, heading_deg: float, pile_ra
 
 #: Spacing [rad/s] of the ω grid :func:`pile_scattered_interpolated` tabulates X^s on.
 TABLE_DOMEGA = 0.01
+#: Tables kept per process (oldest dropped first).
+TABLE_CACHE_SIZE = 32
 _TABLES: dict = {}
+
+
+@dataclass(frozen=True, eq=False)
+class ScatteredTable:
+    r"""X^s of one wave direction on a uniform ω grid, without the fast phase of the pile's distance —
+    what :func:`pile_scattered_interpolated` interpolates.
+
+    A plain value: made in one process, it serves another (a campaign makes each table once and
+    ships it to its workers, :func:`remember_tables`). ``key`` names what it was made from by content
+    (the hull panels in the global frame, the ω grid, ρ, g, the layout, the depth and the direction),
+    never by object identity.
+
+    Attributes
+    ----------
+    key : tuple
+        See :func:`pile_table_key`.
+    grid : ndarray, shape (n,)
+        ω [rad/s], step :data:`TABLE_DOMEGA` over the database's band.
+    reduced : ndarray of complex, shape (6, n)
+        :math:`X^s(\omega)\,e^{-ik(\omega)\,d}` [N/m, N·m/m].
+    d : float
+        Distance [m] of the reference point from the pile axis along the direction of travel,
+        :math:`x_0\cos\theta + y_0\sin\theta`.
+    """
+
+    key: tuple
+    grid: np.ndarray
+    reduced: np.ndarray
+    d: float
+
+
+def _table_grid(db: HydroDB) -> np.ndarray:
+    lo = max(float(db.omega[0]), TABLE_DOMEGA)
+    return np.arange(lo, float(db.omega[-1]) + TABLE_DOMEGA / 2, TABLE_DOMEGA)
+
+
+@dataclass(frozen=True, eq=False)
+class _TableLayout:
+    """:func:`_layout` of one database and layout, its table grid and the content key of its tables
+    without the direction."""
+
+    a: float
+    h: float
+    pos: np.ndarray
+    N: np.ndarray
+    xg: np.ndarray
+    grid: np.ndarray
+    key: tuple
+
+
+#: Table layouts per database (weakly: they go with it) and arguments.
+_LAYOUTS: "weakref.WeakKeyDictionary[HydroDB, dict]" = weakref.WeakKeyDictionary()
+
+
+def _table_layout(db: HydroDB, position, heading_deg: float, pile_radius: float, water_depth) -> _TableLayout:
+    """The validated layout (:func:`_layout`), the ω grid and the tables' content key, kept per database
+    and arguments: a campaign's trials of one layout look them up instead of rebuilding the panels."""
+    args = (tuple(float(v) for v in np.asarray(position, dtype=float).reshape(-1)), float(heading_deg),
+            float(pile_radius), None if water_depth is None else float(water_depth))
+    per_db = _LAYOUTS.setdefault(db, {})
+    if args not in per_db:
+        a, h, pos, N, xg = _layout(db, position, heading_deg, pile_radius, water_depth)
+        grid = _table_grid(db)
+        digest = hashlib.blake2b(digest_size=16)
+        for arr in (N, xg, grid):
+            digest.update(np.ascontiguousarray(arr, dtype=float).tobytes())
+        key = (digest.hexdigest(), float(db.g), float(db.rho), float(pos[0]), float(pos[1]), float(heading_deg),
+               float(a), float(h))
+        if len(per_db) >= TABLE_CACHE_SIZE:
+            per_db.pop(next(iter(per_db)))
+        per_db[args] = _TableLayout(a, h, pos, N, xg, grid, key)
+    return per_db[args]
+
+
+def pile_table_key(db: HydroDB, position, heading_deg: float, pile_radius: float, theta: float,
+                   water_depth: float | None = None) -> tuple:
+    """What the table of direction ``theta`` [rad, global] is made from, by content: a digest of the hull
+    panels in the global frame (centroids, generalised normals × areas) and of the ω grid, then g, ρ,
+    the position relative to the pile, the heading, the radius, the depth and θ. Arguments as
+    :func:`pile_scattered_excitation`."""
+    return (*_table_layout(db, position, heading_deg, pile_radius, water_depth).key, float(theta))
+
+
+def _remember(table: ScatteredTable) -> None:
+    if table.key not in _TABLES and len(_TABLES) >= TABLE_CACHE_SIZE:
+        _TABLES.pop(next(iter(_TABLES)))
+    _TABLES[table.key] = table
+
+
+def remember_tables(tables) -> None:
+    """Keep ``tables`` (:class:`ScatteredTable`, made elsewhere — e.g. by the process that runs a campaign)
+    in this process's cache: :func:`pile_scattered_interpolated` then looks them up instead of computing
+    them. A table serves exactly the inputs its key names."""
+    for table in tables:
+        _remember(table)
+
+
+def scattered_tables(db: HydroDB, position, heading_deg: float, pile_radius: float, theta,
+                     water_depth: float | None = None) -> list[ScatteredTable]:
+    """The tables of :func:`pile_scattered_interpolated` for each distinct direction in ``theta`` [rad,
+    global], from this process's cache or computed (and cached): 0.5–1 s each for a 24 m CTV's mesh.
+    Arguments as :func:`pile_scattered_excitation`."""
+    layout = _table_layout(db, position, heading_deg, pile_radius, water_depth)
+    return [_table(db, position, heading_deg, pile_radius, water_depth, layout, float(t))
+            for t in np.unique(np.asarray(theta, dtype=float))]
+
+
+def _table(db, position, heading_deg, pile_radius, water_depth, layout: _TableLayout, t: float) -> ScatteredTable:
+    key = (*layout.key, t)
+    table = _TABLES.get(key)
+    if table is None:
+        pos, grid = layout.pos, layout.grid
+        d = pos[0] * math.cos(t) + pos[1] * math.sin(t)
+        Xs = pile_scattered_components(db, position, heading_deg, pile_radius, grid, np.full(grid.size, t),
+                                       water_depth)
+        table = ScatteredTable(key, grid, Xs * np.exp(-1j * wavenumber(grid, layout.h, db.g) * d)[None, :], d)
+        _remember(table)
+    return table
 
 
 def pile_scattered_interpolated(db: HydroDB, position, heading_deg: float, pile_radius: float, omega, theta,
                                 water_depth: float | None = None) -> np.ndarray:
     r"""X^s at wave components (ω_i, θ_i) like :func:`pile_scattered_components`, from a table over a
-    uniform ω grid (:data:`TABLE_DOMEGA`, the database's band) per direction, kept per process: a
-    campaign's trials of one case (same layout, random component frequencies) compute it once.
+    uniform ω grid (:data:`TABLE_DOMEGA`, the database's band) per direction, kept per process
+    (:func:`scattered_tables`; a campaign makes them once and ships them: :func:`remember_tables`): a
+    campaign's trials of one case (same layout, random component frequencies) share them.
 
     The table holds :math:`X^s(\omega)\,e^{-ik(\omega)\,d}` — X^s without the fast phase of the pile's
     distance d along the wave direction — interpolated linearly (real and imaginary parts) and
@@ -210,22 +335,14 @@ def pile_scattered_interpolated(db: HydroDB, position, heading_deg: float, pile_
     DOF from the exact sum, at 0.9 s for the table against 1.5 s for the exact sum of 400 components.
     Components above the database's band get zero (their excitation is zero too).
     """
-    a, h, pos, _, _ = _layout(db, position, heading_deg, pile_radius, water_depth)
+    layout = _table_layout(db, position, heading_deg, pile_radius, water_depth)
     om = np.asarray(omega, dtype=float)
     th = np.asarray(theta, dtype=float)
     out = np.zeros((6, om.size), dtype=complex)
-    lo = max(float(db.omega[0]), TABLE_DOMEGA)
-    grid = np.arange(lo, float(db.omega[-1]) + TABLE_DOMEGA / 2, TABLE_DOMEGA)
+    grid, h = layout.grid, layout.h
     for t in np.unique(th):
-        key = (id(db), db.name, float(pos[0]), float(pos[1]), float(heading_deg), float(a), float(h), float(t))
-        if key not in _TABLES:
-            if len(_TABLES) >= 32:
-                _TABLES.pop(next(iter(_TABLES)))
-            d = pos[0] * math.cos(t) + pos[1] * math.sin(t)
-            table = pile_scattered_components(db, position, heading_deg, pile_radius, grid, np.full(grid.size, t),
-                                              water_depth)
-            _TABLES[key] = (db, table * np.exp(-1j * wavenumber(grid, h, db.g) * d)[None, :], d)
-        _, reduced, d = _TABLES[key]
+        table = _table(db, position, heading_deg, pile_radius, water_depth, layout, float(t))
+        reduced, d = table.reduced, table.d
         sel = (th == t) & (om <= grid[-1])
         w = om[sel]
         vals = np.array([np.interp(w, grid, r.real) + 1j * np.interp(w, grid, r.imag) for r in reduced])

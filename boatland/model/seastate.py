@@ -47,7 +47,7 @@ from boatland.waves.realisation import (Components, concatenate, n_components_fo
 from boatland.waves.spectra import SIGMA_A, SIGMA_B, bin_variance, spectrum_band, spreading_cos2s, tma
 
 __all__ = ["KINDS", "AMPLITUDES", "SeaStateWarning", "SpectrumPart", "SeaState", "RegularWave", "MeasuredRecord",
-           "spectrum_part_problems", "excitation_table", "wave_excitation"]
+           "spectrum_part_problems", "excitation_table", "wave_excitation", "pile_tables", "TABULATED_DIRECTIONS"]
 
 KINDS = ("jonswap", "pm", "tma")
 AMPLITUDES = ("deterministic", "rayleigh")
@@ -183,6 +183,16 @@ class _Waves:
         T_ramp = self.default_ramp_time if ramp_time is None else ramp_time
         return wave_excitation(comps, db, dt=dt, n_steps=n_steps, x0=x0, y0=y0, heading_deg=heading_deg,
                                ramp_time=T_ramp, pile=None if pile is None else (*pile, self.water_depth))
+
+    def pile_tables(self, db: HydroDB, *, seed=None, dt: float, n_steps: int, x0: float = 0.0, y0: float = 0.0,
+                    heading_deg: float = 0.0, pile=None) -> list:
+        """The ω tables of the pile's scattered wave that :meth:`excitation` with the same arguments
+        interpolates (:func:`pile_tables`): made once, they serve every trial of the same layout and sea
+        directions, in this process or another (:func:`boatland.model.pile_diffraction.remember_tables`)."""
+        if pile is None:
+            return []
+        comps = self.realise(seed, n_steps * dt)
+        return pile_tables(comps, db, x0=x0, y0=y0, heading_deg=heading_deg, pile=(*pile, self.water_depth))
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -578,6 +588,36 @@ def excitation_table(db: HydroDB) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return omega, np.asarray(beta, float), X
 
 
+#: Seas of at most this many distinct directions get the pile's scattered wave from cached ω tables
+#: (:func:`boatland.model.pile_diffraction.pile_scattered_interpolated`); more (short-crested) exactly.
+TABULATED_DIRECTIONS = 8
+
+
+def _pile_layout(components: Components, x0: float, y0: float, pile):
+    """(radius, position relative to the pile axis, depth or None for deep water, mask of the
+    components with ω > 0, whether their X^s comes from the ω tables) for ``pile`` = (radius, (x, y), depth)."""
+    radius, (px, py), depth = pile
+    waves = components.omega > 0
+    tabulated = np.unique(components.theta[waves]).size <= TABULATED_DIRECTIONS   # long-crested: cached ω tables
+    return radius, (float(x0) - px, float(y0) - py), None if math.isinf(depth) else depth, waves, tabulated
+
+
+def pile_tables(components: Components, db: HydroDB, *, x0: float = 0.0, y0: float = 0.0, heading_deg: float = 0.0,
+                pile=None) -> list:
+    """The ω tables of the pile's scattered wave that :func:`wave_excitation` with the same arguments
+    interpolates (:class:`boatland.model.pile_diffraction.ScatteredTable`; from this process's cache or
+    made now). None without a pile or for a sea of more than :data:`TABULATED_DIRECTIONS` directions (its
+    scattered wave is summed exactly). A campaign makes them once and ships them to its workers."""
+    if pile is None:
+        return []
+    from boatland.model.pile_diffraction import scattered_tables
+
+    radius, position, depth, waves, tabulated = _pile_layout(components, x0, y0, pile)
+    if not tabulated or not np.any(waves):
+        return []
+    return scattered_tables(db, position, heading_deg, radius, components.theta[waves], depth)
+
+
 def wave_excitation(components: Components, db: HydroDB, *, dt: float, n_steps: int, x0: float = 0.0,
                     y0: float = 0.0, heading_deg: float = 0.0, ramp_time: float = 0.0, pile=None) -> np.ndarray:
     r"""Excitation force series on the RK4 grid t_n = n Δt/2, n = 0..2 n_steps, body frame.
@@ -642,14 +682,11 @@ def wave_excitation(components: Components, db: HydroDB, *, dt: float, n_steps: 
     if pile is not None:
         from boatland.model.pile_diffraction import pile_scattered_components, pile_scattered_interpolated
 
-        radius, (px, py), depth = pile
-        waves = components.omega > 0
-        few_directions = np.unique(components.theta[waves]).size <= 8   # long-crested: a cached ω table
-        scattered = pile_scattered_interpolated if few_directions else pile_scattered_components
+        radius, position, depth, waves, tabulated = _pile_layout(components, x0, y0, pile)
+        scattered = pile_scattered_interpolated if tabulated else pile_scattered_components
         X_extra = np.zeros((6, components.size), dtype=complex)
-        X_extra[:, waves] = scattered(db, (float(x0) - px, float(y0) - py), heading_deg, radius,
-                                      components.omega[waves], components.theta[waves],
-                                      None if math.isinf(depth) else depth)
+        X_extra[:, waves] = scattered(db, position, heading_deg, radius, components.omega[waves],
+                                      components.theta[waves], depth)
     F, _, n_above = excitation_series(components, omega, beta, X, float(x0), float(y0),
                                       math.radians(heading_deg), 0.0, 0.5 * dt, 2 * int(n_steps) + 1,
                                       float(ramp_time), X_extra)

@@ -21,6 +21,7 @@ thesis, NTNU.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numba
@@ -29,7 +30,7 @@ import numpy as np
 from boatland.contact.fender import OFF, OPEN, SLIP, STICK
 
 __all__ = ["Event", "SlipEpisode", "SLID_OFF", "extract_events", "slip_episodes", "landing_offset", "track_landing",
-           "first_exceedance"]
+           "worst_landing_offset", "first_exceedance"]
 
 SLID_OFF = "slid off the landing"
 KIND = {(OPEN, STICK): "contact made", (OPEN, SLIP): "contact made", (STICK, OPEN): "contact lost",
@@ -81,11 +82,13 @@ def extract_events(t, mode, needed, available) -> list[Event]:
     """
     events = []
     mode = np.asarray(mode)
+    t, needed, available = np.asarray(t), np.asarray(needed), np.asarray(available)
     for c in range(mode.shape[1]):
-        change = np.nonzero(mode[1:, c] != mode[:-1, c])[0] + 1
-        for k in change:
-            kind = KIND[(int(mode[k - 1, c]), int(mode[k, c]))]
-            events.append(Event(float(t[k]), int(k), c, kind, float(needed[k, c]), float(available[k, c])))
+        col = mode[:, c]
+        change = np.flatnonzero(col[1:] != col[:-1]) + 1
+        columns = (t[change], change, col[change - 1], col[change], needed[change, c], available[change, c])
+        events += [Event(float(tk), k, c, KIND[(m0, m1)], float(f_need), float(f_av))
+                   for tk, k, m0, m1, f_need, f_av in zip(*(a.tolist() for a in columns))]
     events.sort(key=lambda e: (e.step, e.contact))
     return events
 
@@ -108,18 +111,59 @@ def slip_episodes(t, mode, tpos) -> list[SlipEpisode]:
             continue
         ends = np.flatnonzero(sliding[:-1] & ~sliding[1:]) + 1        # first row after each slip run
         j_end = np.searchsorted(ends, starts)
-        for k0, j in zip(starts, j_end):
-            if j < ends.size:
-                k1, ended = int(ends[j]), ended_by[int(m[ends[j]])]
-            else:
-                k1, ended = n - 1, "end of run"
-            d = tpos[k0:k1 + 1, c] - tpos[k0 - 1, c]
-            dist = np.hypot(d[:, 0], d[:, 1])
-            i = int(np.argmax(dist))
-            episodes.append(SlipEpisode(c, float(t[k0]), float(t[k1]), float(dist[i]), float(d[i, 0]),
-                                        float(d[i, 1]), ended))
+        closed = j_end < ends.size
+        k1 = np.full(starts.size, n - 1)
+        k1[closed] = ends[j_end[closed]]
+        dist, dv, dh = _largest_slides(np.ascontiguousarray(tpos[:, c], dtype=float), starts, k1)
+        why = [ended_by[int(x)] if ok else "end of run" for x, ok in zip(m[k1].tolist(), closed.tolist())]
+        episodes += [SlipEpisode(c, float(ts), float(te), di, v, h, e) for ts, te, di, v, h, e in
+                     zip(t[starts].tolist(), t[k1].tolist(), dist.tolist(), dv.tolist(), dh.tolist(), why)]
     episodes.sort(key=lambda e: (e.t_start, e.contact))
     return episodes
+
+
+@numba.njit(cache=True)
+def _largest_slides(tpos, starts, ends):  # pragma: no cover - compiled
+    """For each slip run [k0, k1] of one contact (``tpos`` (n, 2)): the largest displacement from where it
+    stuck (row k0 − 1) and its (vertical, horizontal) parts at that row — the first row of the largest
+    (NaN: the first NaN), as ``np.argmax`` of ``np.hypot``."""
+    m = starts.size
+    dist, dv, dh = np.empty(m), np.empty(m), np.empty(m)
+    for e in range(m):
+        k0, k1 = starts[e], ends[e]
+        r0, r1 = tpos[k0 - 1, 0], tpos[k0 - 1, 1]
+        best, kb = -np.inf, k0
+        for k in range(k0, k1 + 1):
+            v = math.hypot(tpos[k, 0] - r0, tpos[k, 1] - r1)
+            if np.isnan(v):
+                kb = k
+                break
+            if v > best:
+                best, kb = v, k
+        dist[e] = math.hypot(tpos[kb, 0] - r0, tpos[kb, 1] - r1)
+        dv[e] = tpos[kb, 0] - r0
+        dh[e] = tpos[kb, 1] - r1
+    return dist, dv, dh
+
+
+@numba.njit(cache=True)
+def _row_max(off):  # pragma: no cover - compiled
+    """Largest value of each row, NaN counted as 0 (values ≥ 0): ``np.where(np.isnan(off), 0, off).max(1)``."""
+    n, nc = off.shape
+    out = np.zeros(n)
+    for k in range(n):
+        w = 0.0
+        for c in range(nc):
+            v = off[k, c]
+            if v > w:
+                w = v
+        out[k] = w
+    return out
+
+
+def worst_landing_offset(mode, tpos, k_start: int = 0) -> np.ndarray:
+    """Largest :func:`landing_offset` over the contacts at each step (0 where none has landed): (n,)."""
+    return _row_max(landing_offset(mode, tpos, k_start))
 
 
 @numba.njit(cache=True)

@@ -12,7 +12,8 @@ from boatland import __version__
 from boatland.atomic import atomic_path
 from boatland.conventions import DOF_NAMES, DOF_UNITS
 from boatland.model.scenario_parts import Incidents
-from boatland.trial.events import SLID_OFF, Event, SlipEpisode, first_exceedance, landing_offset
+from boatland.trial.events import (SLID_OFF, Event, SlipEpisode, first_exceedance, landing_offset,
+                                   worst_landing_offset)
 
 __all__ = ["Result", "TrialSeries", "SERIES"]
 
@@ -127,15 +128,16 @@ class Result(TrialSeries):
         """Largest landing offset over the contacts per step (0 where none has landed); None without contacts."""
         if not self.mode.shape[1]:
             return None
-        off = self.landing_offset()
-        return np.where(np.isnan(off), 0.0, off).max(axis=1)
+        return worst_landing_offset(self.mode, self.tpos, self._settle_row())
 
     def incident_times(self) -> dict[str, float | None]:
         """First time of each incident definition (None: did not happen)."""
+        return self._incident_times(self._worst_offset())
+
+    def _incident_times(self, worst: np.ndarray | None) -> dict[str, float | None]:
         out: dict[str, float | None] = {}
         slip_limits = self.incidents.slip_distance if self.incidents is not None else (0.1,)
         roll_limits = self.incidents.roll_limit_deg if self.incidents is not None else ()
-        worst = self._worst_offset()
         for limit in slip_limits:
             out[f"slip > {limit:g} m"] = first_exceedance(self.t, worst, limit) if worst is not None else None
         for limit in roll_limits:
@@ -166,7 +168,7 @@ class Result(TrialSeries):
             "contact_fraction": float(touching.all(axis=1).mean()) if self.mode.shape[1] else 0.0,
             "max_motions": {f"{n} [{'deg' if u == 'rad' else u}]": float(np.degrees(a) if u == "rad" else a)
                             for n, u, a in zip(DOF_NAMES, DOF_UNITS, np.max(np.abs(self.x), axis=0))},
-            "incidents": self.incident_times(),
+            "incidents": self._incident_times(worst),
             "provenance": self.provenance,
         }
 

@@ -24,7 +24,7 @@ from boatland.errors import BoatlandInputError
 from boatland.integrate.cummins import OUTCOME_STATUSES
 from boatland.irf.impulse import IRFSettings
 from boatland.model.landed import check_memory, lumped_fender
-from boatland.model.motion import compile_motion
+from boatland.model.motion import MotionArrays, compile_motion
 from boatland.model.radiation import RadiationMemory, default_dt, radiation_memory
 from boatland.model.scenario import Scenario, ScenarioWarning
 from boatland.model.hydrodb import HydroDB
@@ -33,8 +33,8 @@ from boatland.trial.events import extract_events, slip_episodes
 from boatland.trial.result import SERIES, Result
 from boatland.trial.sink import StepBlock, TrialInfo, TrialSink
 
-__all__ = ["simulate", "prepare_memory", "check_radiation", "contact_arrays", "thrust_series", "wave_ramp", "wave_start",
-           "exposure_start", "BlowUpError"]
+__all__ = ["simulate", "prepare_memory", "check_radiation", "motion_arrays", "pile_tables", "contact_arrays",
+           "thrust_series", "wave_ramp", "wave_start", "exposure_start", "BlowUpError"]
 
 #: Runaway limits: no CTV landing survives these (linear hydrodynamics is meaningless beyond them).
 LIMIT_TRANS, LIMIT_ROT = 50.0, np.radians(60.0)
@@ -79,7 +79,10 @@ def thrust_series(scenario: Scenario, dt: float, n_steps: int) -> np.ndarray:
     if scenario.thrust is None:
         return np.zeros_like(t)
     T, ramp = scenario.thrust.force, scenario.thrust.ramp
-    r = np.ones_like(t) if ramp <= 0 else np.where(t < ramp, 0.5 * (1 - np.cos(np.pi * t / ramp)), 1.0)
+    r = np.ones_like(t)
+    if ramp > 0:                       # the half-cosine where t < ramp (t increases): evaluated there only
+        k = int(np.searchsorted(t, ramp, side="left"))
+        r[:k] = 0.5 * (1 - np.cos(np.pi * t[:k] / ramp))
     return T * r
 
 
@@ -102,7 +105,10 @@ def wave_ramp(scenario: Scenario, dt: float, n_steps: int) -> np.ndarray:
     T = scenario.simulation.start_ramp
     if T <= 0:
         return (t >= 0).astype(float)
-    return np.where(t <= 0, 0.0, np.where(t < T, 0.5 * (1 - np.cos(np.pi * np.clip(t, 0, T) / T)), 1.0))
+    r = np.where(t <= 0, 0.0, 1.0)
+    k0, k1 = int(np.searchsorted(t, 0.0, side="right")), int(np.searchsorted(t, T, side="left"))
+    r[k0:k1] = 0.5 * (1 - np.cos(np.pi * t[k0:k1] / T))   # the half-cosine, evaluated where 0 < t < T only
+    return r
 
 
 def contact_arrays(scenario: Scenario, db: HydroDB) -> Contacts:
@@ -132,10 +138,36 @@ def contact_arrays(scenario: Scenario, db: HydroDB) -> Contacts:
                        sideways=fender.sideways)
 
 
+def motion_arrays(scenario: Scenario, db: HydroDB, memory: RadiationMemory) -> MotionArrays:
+    """The kernel arrays of the scenario's radiation method, memory length and time step
+    (:func:`boatland.model.motion.compile_motion`): the same for every seed, so a campaign compiles them once
+    per case and passes them to :func:`simulate` (``arrays``)."""
+    try:
+        return compile_motion(db, memory, scenario.time_step(db), method=scenario.radiation.method,
+                              memory_length=scenario.radiation.memory)
+    except ValueError as exc:  # a state-space pole too fast for dt: the scenario's choice, not a bug
+        raise BoatlandInputError(f"{scenario.source}: simulation.dt: {exc}") from None
+
+
+def pile_tables(scenario: Scenario, db: HydroDB) -> list:
+    """The ω tables of the pile's scattered wave a trial of ``scenario`` interpolates
+    (:class:`boatland.model.pile_diffraction.ScatteredTable`; none without waves, a pile or for a
+    short-crested sea). They depend on the layout and the sea's directions, not on the seed: a campaign
+    makes them once per case and ships them to its workers
+    (:func:`boatland.model.pile_diffraction.remember_tables`)."""
+    waves = scenario.wave_model(db)
+    pile = scenario.pile(db)
+    if waves is None or pile is None:
+        return []
+    x0, y0, psi = scenario.start_pose()
+    return waves.pile_tables(db, seed=scenario.simulation.seed, dt=scenario.time_step(db), n_steps=scenario.n_steps(db),
+                             x0=x0, y0=y0, heading_deg=float(np.degrees(psi)), pile=pile)
+
+
 @pinned
 def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None = None,
-             progress: Callable[[int, int], None] | None = None, sinks: Sequence[TrialSink] = (),
-             progress_every: float = 0.1) -> Result:
+             arrays: MotionArrays | None = None, progress: Callable[[int, int], None] | None = None,
+             sinks: Sequence[TrialSink] = (), progress_every: float = 0.1) -> Result:
     r"""Run one landing trial.
 
     Equation of motion (DESIGN.md §1; Cummins 1962, seed 000 eq. 3.40; contact: seed 001 §2.5, §3.4):
@@ -152,8 +184,11 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
         The vessel's database (with a mass matrix).
     memory : RadiationMemory, optional
         Reuse IRFs / state-space fit across trials of a campaign (must match the scenario's settings;
-        the caller checks it once with :func:`check_radiation`). Without it the memory is made and
-        checked here.
+        the caller checks it once with :func:`check_radiation`). Without it (and without ``arrays``) the
+        memory is made and checked here.
+    arrays : MotionArrays, optional
+        The kernel arrays compiled from the scenario's checked memory (:func:`motion_arrays`), reused
+        across trials; given, ``memory`` is not used.
     progress : callable, optional
         ``progress(steps_done, n_steps)``, called every ``progress_every`` seconds while the kernel runs
         (it runs in a worker thread with the GIL released) — e.g. to drive a progress bar; 0 calls it at
@@ -175,14 +210,11 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
     wall0 = time.perf_counter()
     dt = scenario.time_step(db)
     n = scenario.n_steps(db)
-    if memory is None:
-        memory = prepare_memory(scenario, db)
-        check_radiation(scenario, db, memory, dt)
-    try:
-        arrays = compile_motion(db, memory, dt, method=scenario.radiation.method,
-                                memory_length=scenario.radiation.memory)
-    except ValueError as exc:  # a state-space pole too fast for dt: the scenario's choice, not a bug
-        raise BoatlandInputError(f"{scenario.source}: simulation.dt: {exc}") from None
+    if arrays is None:
+        if memory is None:
+            memory = prepare_memory(scenario, db)
+            check_radiation(scenario, db, memory, dt)
+        arrays = motion_arrays(scenario, db, memory)
     x0g, y0g, psi = scenario.start_pose()
     waves = scenario.wave_model(db)
     if waves is None:
@@ -190,7 +222,9 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
     else:
         F = waves.excitation(db, seed=scenario.simulation.seed, dt=dt, n_steps=n, x0=x0g, y0=y0g,
                              heading_deg=float(np.degrees(psi)), ramp_time=0.0, pile=scenario.pile(db))
-        F *= wave_ramp(scenario, dt, n)[:, None]
+        r = wave_ramp(scenario, dt, n)
+        k = int(np.flatnonzero(r != 1.0)[-1]) + 1 if np.any(r != 1.0) else 0   # rows after k: × 1 (unchanged)
+        F[:k] *= r[:k, None]
     thrust = thrust_series(scenario, dt, n)
     Bv, Bq = scenario.additional_damping(db)
     contacts = contact_arrays(scenario, db)

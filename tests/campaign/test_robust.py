@@ -164,6 +164,27 @@ def test_pinning_makes_a_thread_sensitive_computation_reproducible():
     assert results[0] == results[1]
 
 
+def test_pinning_scans_the_libraries_again_after_an_import(tmp_path, monkeypatch):
+    """The loaded libraries are found once and again after any import (a new BLAS or OpenMP runtime
+    comes with one): every pool is at one thread inside, back to its limit after."""
+    from threadpoolctl import threadpool_info
+
+    import boatland.reproducible as rep
+
+    before = [p["num_threads"] for p in threadpool_info()]
+    with rep.single_threaded():
+        assert all(p["num_threads"] == 1 for p in threadpool_info())
+    first = rep._controller()
+    assert rep._controller() is first                       # nothing imported since: no new scan
+    (tmp_path / "freshly_imported_module.py").write_text("X = 1\n")
+    monkeypatch.syspath_prepend(str(tmp_path))
+    __import__("freshly_imported_module")
+    assert rep._controller() is not first
+    with rep.single_threaded():
+        assert all(p["num_threads"] == 1 for p in threadpool_info())
+    assert [p["num_threads"] for p in threadpool_info()] == before
+
+
 @pytest.fixture
 def small_disk(tmp_path):
     """A real 1 MiB filesystem (tmpfs; needs root), nearly full."""

@@ -116,3 +116,30 @@ def test_components_equal_grid_values(ctv):
     Xc = pile_scattered_components(ctv, pos, psi, A_PILE, ctv.omega[fi], np.radians(ctv.wave_dir_deg[bi] + psi))
     assert Xc.shape == (6, fi.size)
     np.testing.assert_allclose(Xc, Xg[:, bi, fi], atol=1e-9 * np.abs(Xg).max())
+
+
+def test_scattered_tables_are_keyed_by_content_and_serve_another_process(ctv, monkeypatch):
+    """A table made in one process (pickled as to a campaign worker) serves another database object of the
+    same content there, bit for bit, without being made again; another layout is another table."""
+    import pickle
+
+    import boatland.model.pile_diffraction as pd
+
+    monkeypatch.setattr(pd, "_TABLES", {})
+    theta = np.radians([180.0, 135.0])
+    om, th = np.linspace(0.3, 2.5, 50), np.repeat(theta, 25)
+    tables = pd.scattered_tables(ctv, BOW_AT_PILE, 0.0, A_PILE, theta)
+    assert len(tables) == 2
+    made = pd.pile_scattered_interpolated(ctv, BOW_AT_PILE, 0.0, A_PILE, om, th)
+
+    def made_again(*args, **kwargs):
+        raise AssertionError("made again")
+
+    monkeypatch.setattr(pd, "_TABLES", {})
+    pd.remember_tables(pickle.loads(pickle.dumps(tables)))
+    monkeypatch.setattr(pd, "pile_scattered_components", made_again)
+    twin = ctv.replace(X=ctv.X.copy())                               # another object, the same content
+    assert pd.pile_scattered_interpolated(twin, BOW_AT_PILE, 0.0, A_PILE, om, th).tobytes() == made.tobytes()
+    assert pd.pile_table_key(twin, BOW_AT_PILE, 0.0, A_PILE, float(np.unique(theta)[0])) == tables[0].key
+    with pytest.raises(AssertionError, match="made again"):
+        pd.pile_scattered_interpolated(ctv, (BOW_AT_PILE[0] - 1.0, 0.0), 0.0, A_PILE, om, th)

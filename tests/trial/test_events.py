@@ -62,3 +62,68 @@ def test_landing_offset_accumulates_short_slides_and_survives_a_bounce():
     settled = landing_offset(mode, tpos, k_start=5)[:, 0]            # settling until row 5: lands at 0.06
     assert np.isnan(settled[:5]).all() and settled[9] == pytest.approx(0.08)
     assert first_exceedance(t, np.nan_to_num(off), 0.05) == 6.0
+
+
+# --- the one-pass implementations against the plain loops they replaced (bit for bit) ------------------
+
+
+def _events_loop(t, mode, needed, available):
+    """extract_events as a loop over every change (the former implementation: the oracle)."""
+    from boatland.trial.events import KIND, Event
+
+    events = []
+    for c in range(mode.shape[1]):
+        for k in np.nonzero(mode[1:, c] != mode[:-1, c])[0] + 1:
+            events.append(Event(float(t[k]), int(k), c, KIND[(int(mode[k - 1, c]), int(mode[k, c]))],
+                                float(needed[k, c]), float(available[k, c])))
+    events.sort(key=lambda e: (e.step, e.contact))
+    return events
+
+
+def _episodes_loop(t, mode, tpos):
+    """slip_episodes with a scan per episode and np.argmax of np.hypot (the former implementation)."""
+    from boatland.contact.fender import OFF, OPEN, SLIP, STICK
+    from boatland.trial.events import SlipEpisode
+
+    episodes, n = [], mode.shape[0]
+    ended_by = {STICK: "re-stick", OPEN: "contact lost", OFF: "slid off the landing"}
+    for c in range(mode.shape[1]):
+        m = mode[:, c]
+        for k0 in np.flatnonzero((m[1:] == SLIP) & (m[:-1] == STICK)) + 1:
+            rest = np.flatnonzero(m[k0:] != SLIP)
+            k1, ended = (k0 + int(rest[0]), ended_by[int(m[k0 + rest[0]])]) if rest.size else (n - 1, "end of run")
+            d = tpos[k0:k1 + 1, c] - tpos[k0 - 1, c]
+            dist = np.hypot(d[:, 0], d[:, 1])
+            i = int(np.argmax(dist))
+            episodes.append(SlipEpisode(c, float(t[k0]), float(t[k1]), float(dist[i]), float(d[i, 0]),
+                                        float(d[i, 1]), ended))
+    episodes.sort(key=lambda e: (e.t_start, e.contact))
+    return episodes
+
+
+def _as_bits(items):
+    return [tuple(np.float64(v).tobytes() if isinstance(v, float) else v for v in vars(e).values()) for e in items]
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_one_pass_events_episodes_and_offsets_equal_the_loops_bit_for_bit(seed):
+    """Random records of 2–3 contacts (all four modes, runs of every length, slips still running at the
+    end, NaN positions, ties): events, episodes and the worst landing offset are the former loops' values
+    bit for bit."""
+    from boatland.trial.events import worst_landing_offset
+
+    rng = np.random.default_rng(seed)
+    n, nc = 3000, 2 + seed % 2
+    runs = rng.integers(1, 40, size=n)
+    mode = np.repeat(rng.choice(4, size=n, p=[0.1, 0.45, 0.4, 0.05]), runs)[:n].reshape(-1, 1)
+    mode = np.column_stack([np.roll(mode[:, 0], 17 * c) for c in range(nc)]).astype(np.int64)
+    mode[-5:, 0] = 2                                                 # a slip still running at the end
+    t = np.arange(n) * 0.05
+    tpos = np.round(rng.normal(size=(n, nc, 2)), 2)                 # rounded: equal distances (ties) happen
+    tpos[rng.integers(0, n, 5), 0, rng.integers(0, 2, 5)] = np.nan
+    needed, available = rng.normal(size=(n, nc)), rng.normal(size=(n, nc))
+    assert _as_bits(extract_events(t, mode, needed, available)) == _as_bits(_events_loop(t, mode, needed, available))
+    assert _as_bits(slip_episodes(t, mode, tpos)) == _as_bits(_episodes_loop(t, mode, tpos))
+    off = landing_offset(mode, tpos, k_start=7)
+    expected = np.where(np.isnan(off), 0.0, off).max(axis=1)
+    assert worst_landing_offset(mode, tpos, k_start=7).tobytes() == expected.tobytes()

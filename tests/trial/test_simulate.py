@@ -96,3 +96,52 @@ def test_a_truncated_convolution_that_makes_the_landed_yaw_grow_is_refused(landi
     with pytest.raises(BoatlandInputError, match=r"radiation\.method: .*sway mode \(T = 3\d\.\d s\).*state_space"):
         simulate(sc.replace({"radiation.method": "convolution", "radiation.taper": "none", "simulation.duration": 30.0}),
                  db)
+
+
+def test_ramps_are_the_whole_series_formulas_bit_for_bit(landing):
+    """thrust_series and wave_ramp evaluate the half-cosine only where it applies: the same bits as the
+    formulas over the whole series."""
+    from boatland.trial.simulate import thrust_series, wave_ramp, wave_start
+
+    sc, db = landing
+    dt, n = 0.05, 4000
+    t = np.arange(2 * n + 1) * dt / 2
+    for changes in ({}, {"thrust.ramp": 7.3, "simulation.start_ramp": 11.1}, {"thrust.ramp": 0.0},
+                    {"simulation.start_ramp": 0.0}):
+        s = sc.replace(changes)
+        T, ramp = s.thrust.force, s.thrust.ramp
+        expected = T * (np.ones_like(t) if ramp <= 0 else np.where(t < ramp, 0.5 * (1 - np.cos(np.pi * t / ramp)), 1.0))
+        assert thrust_series(s, dt, n).tobytes() == expected.tobytes()
+        tw, R = t - wave_start(s), s.simulation.start_ramp
+        expected = (tw >= 0).astype(float) if R <= 0 else \
+            np.where(tw <= 0, 0.0, np.where(tw < R, 0.5 * (1 - np.cos(np.pi * np.clip(tw, 0, R) / R)), 1.0))
+        assert wave_ramp(s, dt, n).tobytes() == expected.tobytes()
+
+
+def test_a_trial_from_shipped_kernel_arrays_and_pile_tables_is_the_same_trial(landing, monkeypatch):
+    """What a campaign makes once and ships (kernel arrays, the pile's ω tables; pickled as to a worker)
+    gives the trial simulate makes by itself, bit for bit — and nothing is made again."""
+    import pickle
+
+    import boatland.model.pile_diffraction as pd
+    import boatland.trial.simulate as sim
+
+    sc, db = landing
+    s = sc.replace({"simulation.duration": 150.0, "sea.Hs": 0.8, "sea.relative_direction_deg": 150.0})
+    own = simulate(s, db)
+    arrays = pickle.loads(pickle.dumps(sim.motion_arrays(s, db, sim.prepare_memory(s, db))))
+    tables = pickle.loads(pickle.dumps(sim.pile_tables(s, db)))
+    assert len(tables) == 1                                           # long-crested: one direction
+
+    def made_again(*args, **kwargs):
+        raise AssertionError("made again")
+
+    monkeypatch.setattr(pd, "_TABLES", {})
+    pd.remember_tables(tables)
+    monkeypatch.setattr(pd, "pile_scattered_components", made_again)
+    monkeypatch.setattr(sim, "prepare_memory", made_again)
+    monkeypatch.setattr(sim, "compile_motion", made_again)
+    shipped = simulate(s, db, arrays=arrays)
+    for name in ("x", "v", "F_exc", "mode", "fn", "ft", "tpos"):
+        assert getattr(shipped, name).tobytes() == getattr(own, name).tobytes(), name
+    assert own.slip_events() and len(shipped.events) == len(own.events)

@@ -1,0 +1,239 @@
+"""Campaigns at the kernel's speed (issue 16): kernel-only, full-trial and campaign steps/s, side by side
+in one run, for 600, 1,800 and 10,000-s accesses on 1 and 2 workers — the last row of 2 workers is the
+seed-002 study size end to end (72 trials × 10,000 s, 9 sea states; SIMO: 45 min per sea state).
+
+Run: ``python bench/bench_throughput.py [--accesses 600 1800 10000] [--rounds 2] [--before CHECKOUT]``
+(``--before``: every campaign row again with another checkout, e.g. ``git archive ba34c7f`` unpacked,
+right after it — before/after in the same run). Prints Markdown.
+
+The study: ``scenarios/campaigns/table414.toml``'s shape — ctv24, 80 kN, Hs 0.3 m, Tp 5/7/9 s ×
+180/135/90° (9 sea states), 8 seeds (72 trials), state-space memory, the pile's scattered wave —
+with its ``duration`` (the access: the exposure after the 20 s settling and the 2 Tp wave ramp) set to
+each access. Steps are every step a trial integrates (settling and ramp included), dt = 0.05 s.
+
+1. **Per trial, this process, one core**: the first seed of each of the 9 cases, timed round-robin
+   (kernel, trial, next case, …) for ``--rounds`` rounds, best per case; steps/s = Σ steps / Σ best.
+   *kernel*: :meth:`MotionArrays.run` on the trial's own inputs (as :func:`simulate` makes them: the
+   excitation with the pile's scattered wave, the wave ramp, thrust, contacts); *trial*: what a campaign
+   worker does per trial — :func:`boatland.campaign.runner.execute_trial` with its case's
+   :class:`CaseData` (scenario, waves, kernel, events, episodes, summary row).
+2. **Where a 10,000-s trial's time goes**: cProfile of one ``execute_trial`` (the largest access asked).
+3. **Campaigns**: the ``boatland campaign`` CLI in a subprocess (start-up, imports, checks, the
+   once-per-campaign preparation, workers, store, screening, statistics — end to end) on 1 and 2 local
+   workers, fresh store each time; wall, the CPU time of the whole process tree, the ratio of its
+   steps/s to 1× / 2× the kernel-only steps/s of part 1 (same run), and the kernel's share of the CPU
+   time (the steps' CPU time at part 1's kernel rate ÷ the tree's CPU time: what a loaded machine
+   distorts least).
+
+The machine is shared: the load average is printed before and after every row, CPU time beside wall.
+"""
+
+from __future__ import annotations
+
+import argparse
+import cProfile
+import datetime
+import os
+import platform
+import pstats
+import re
+import resource
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+from _timing import cpu_name
+
+REPO = Path(__file__).resolve().parents[1]
+STUDY = REPO / "scenarios" / "campaigns" / "table414.toml"
+
+
+def study_file(tmp: Path, access: float, seeds: int = 8) -> Path:
+    """table414.toml with ``duration`` = access (and ``seeds``), its scenario path made absolute."""
+    text = STUDY.read_text(encoding="utf-8")
+    text = re.sub(r"(?m)^duration = .*$", f"duration = {access:g}", text)
+    text = re.sub(r"(?m)^seeds = .*$", f"seeds = {seeds}", text)
+    text = text.replace('"../ctv_landing.toml"', f'"{(STUDY.parent / "../ctv_landing.toml").resolve()}"')
+    path = tmp / f"study_{access:g}_{seeds}.toml"
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def load():
+    from boatland.scenario_check import load as load_scenario, resolve_database
+
+    return load_scenario, resolve_database
+
+
+def kernel_inputs(scenario, db, arrays):
+    """The kernel call of :func:`boatland.trial.simulate.simulate` for this scenario (same inputs)."""
+    from boatland.trial.simulate import LIMIT_ROT, LIMIT_TRANS, contact_arrays, thrust_series, wave_ramp
+
+    dt, n = scenario.time_step(db), scenario.n_steps(db)
+    x0, y0, psi = scenario.start_pose()
+    F = scenario.wave_model(db).excitation(db, seed=scenario.simulation.seed, dt=dt, n_steps=n, x0=x0, y0=y0,
+                                           heading_deg=float(np.degrees(psi)), ramp_time=0.0,
+                                           pile=scenario.pile(db))
+    F *= wave_ramp(scenario, dt, n)[:, None]
+    Bv, Bq = scenario.additional_damping(db)
+    kw = dict(F_ext=F, thrust=thrust_series(scenario, dt, n), r_p=scenario.thrust.position,
+              x0=scenario.initial.displacement, v0=scenario.initial.velocity, Bv=np.diag(Bv), Bq=np.diag(Bq),
+              contacts=contact_arrays(scenario, db), limit_trans=LIMIT_TRANS, limit_rot=LIMIT_ROT)
+    return lambda: arrays.run(dt, n, **kw), n
+
+
+def timed(fn):
+    """(wall, CPU) seconds of one call."""
+    w, c = time.perf_counter(), time.process_time()
+    fn()
+    return time.perf_counter() - w, time.process_time() - c
+
+
+def per_trial(path: Path, rounds: int):
+    """Kernel-only and full-trial (wall, CPU, steps) over the first seed of every case; best per case."""
+    from boatland.campaign.plan import load_campaign
+    from boatland.campaign.runner import check_cases, execute_trial, prepare_cases
+
+    loaders = load()
+    campaign = load_campaign(path, load_scenario=loaders[0])
+    check_cases(campaign, loaders[1])
+    shared = prepare_cases(campaign, loaders[1])
+    db = loaders[1](campaign.base)
+    source = str(path.resolve())
+    specs = [campaign.trials()[c * campaign.seeds] for c in range(len(campaign.cases))]
+    runs = []
+    for spec in specs:
+        sc = campaign.scenario_for(spec)
+        kernel, n = kernel_inputs(sc, db, shared[spec.case].arrays)
+        trial = lambda spec=spec: execute_trial(source, spec, loaders, None, shared[spec.case])  # noqa: E731
+        kernel(), trial()                                    # warm: compiled, cached, tables in place
+        runs.append([kernel, trial, n, [np.inf, np.inf], [np.inf, np.inf]])
+    for _ in range(rounds):
+        for run in runs:
+            for i in (0, 1):
+                w, c = timed(run[i])
+                run[3][i], run[4][i] = min(run[3][i], w), min(run[4][i], c)
+    steps = sum(r[2] for r in runs)
+    wall = [sum(r[3][i] for r in runs) for i in (0, 1)]
+    cpu = [sum(r[4][i] for r in runs) for i in (0, 1)]
+    return steps, wall, cpu, (source, specs[-1], loaders, shared[specs[-1].case])
+
+
+def profile_trial(source, spec, loaders, shared):
+    """Share of one execute_trial's time per stage (cProfile, cumulative)."""
+    from boatland.campaign.runner import execute_trial
+
+    prof = cProfile.Profile()
+    prof.enable()
+    execute_trial(source, spec, loaders, None, shared)
+    prof.disable()
+    stats = pstats.Stats(prof).stats
+    total = max(v[3] for (f, _, name), v in stats.items() if name == "execute_trial")
+
+    def cum(file_part, name):
+        return sum(v[3] for (f, _, nm), v in stats.items() if nm == name and file_part in f)
+
+    parts = [("kernel (run_cummins)", cum("integrate/cummins", "run_cummins")),
+             ("wave excitation (NUFFT, pile tables looked up)", cum("model/seastate", "excitation")),
+             ("events + slip episodes", cum("trial/events", "extract_events") + cum("trial/events", "slip_episodes")),
+             ("summary row (incidents, offsets)", cum("campaign/runner", "_summary_row")),
+             ("scenario of the trial (validated)", cum("campaign/plan", "scenario_for")),
+             ("thrust, ramp, contacts", cum("trial/simulate", "thrust_series") + cum("trial/simulate", "wave_ramp")
+              + cum("trial/simulate", "contact_arrays"))]
+    parts.append(("rest", total - sum(p for _, p in parts)))
+    return total, parts
+
+
+def campaign(path: Path, store: Path, workers: int, code: Path = REPO):
+    """(wall, CPU of the process tree) of the real CLI of the checkout ``code``."""
+    env = dict(os.environ, PYTHONPATH=str(code))
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    t = time.perf_counter()
+    r = subprocess.run([sys.executable, "-m", "boatland", "campaign", str(path), "-o", str(store),
+                        "--workers", str(workers)], capture_output=True, text=True, env=env, cwd=str(code))
+    wall = time.perf_counter() - t
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    if r.returncode:
+        raise SystemExit(r.stderr)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return wall, cpu
+
+
+def load_text() -> str:
+    return "/".join(f"{x:.1f}" for x in os.getloadavg())
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--accesses", type=float, nargs="+", default=[600.0, 1800.0, 10000.0])
+    ap.add_argument("--rounds", type=int, default=2, help="rounds of the per-trial timing (best per case)")
+    ap.add_argument("--seeds", type=int, default=8, help="seeds per case of the campaigns (8: 72 trials)")
+    ap.add_argument("--workers", type=int, nargs="*", default=[1, 2], help="campaign rows (none: per trial only)")
+    ap.add_argument("--before", type=Path, metavar="CHECKOUT",
+                    help="also run each campaign with this checkout of boatland (e.g. an older commit), right after")
+    args = ap.parse_args()
+    import numba
+    import scipy
+
+    numba.set_num_threads(1)
+    print(f"# {cpu_name()}, {os.cpu_count()} CPU, Python {platform.python_version()}, numpy {np.__version__}, "
+          f"scipy {scipy.__version__}, numba {numba.__version__}, {datetime.date.today().isoformat()}, "
+          f"load average {load_text()} (1/5/15 min) at start\n")
+    with tempfile.TemporaryDirectory() as tmp:
+        tmp = Path(tmp)
+        campaign(study_file(tmp, 30.0, 1), tmp / "warm.h5", 2)          # numba caches warm
+        if args.before:
+            campaign(study_file(tmp, 30.0, 1), tmp / "warm_before.h5", 2, args.before)
+        kernel_rate, kernel_cpu_rate, profile = {}, {}, None
+        print("| access [s] | steps per trial (mean) | kernel steps/s (CPU) | trial steps/s (CPU) "
+              "| trial / kernel (CPU) | trial cost per simulated s [ms] (CPU) | load |")
+        print("|---|---|---|---|---|---|---|")
+        for access in args.accesses:
+            path = study_file(tmp, access, args.seeds)
+            load0 = load_text()
+            steps, wall, cpu, last = per_trial(path, args.rounds)
+            kernel_rate[access] = steps / wall[0]
+            kernel_cpu_rate[access] = steps / cpu[0]
+            sim_s = steps * 0.05
+            print(f"| {access:,.0f} | {steps / 9:,.0f} | {steps / wall[0]:,.0f} ({steps / cpu[0]:,.0f}) | "
+                  f"{steps / wall[1]:,.0f} ({steps / cpu[1]:,.0f}) | {wall[0] / wall[1]:.2f} ({cpu[0] / cpu[1]:.2f}) | "
+                  f"{1e3 * wall[1] / sim_s:.3f} ({1e3 * cpu[1] / sim_s:.3f}) | {load0} → {load_text()} |", flush=True)
+            if access == max(args.accesses):
+                profile = (access, profile_trial(*last))
+        if profile is not None:
+            access, (total, parts) = profile
+            print(f"\nOne trial of the {access:,.0f}-s access (last case: Tp 9 s, beam seas), cProfile, "
+                  f"{total:.2f} s in all:\n")
+            print("| stage | time [s] | share |")
+            print("|---|---|---|")
+            for name, t in parts:
+                print(f"| {name} | {t:.3f} | {100 * t / total:.1f} % |")
+        print("\n| access [s] | trials × steps | workers | code | wall [s] | CPU [s] | campaign steps/s | "
+              "÷ (workers × kernel steps/s) | kernel's share of the CPU time | load |")
+        print("|---|---|---|---|---|---|---|---|---|---|")
+        codes = [("this", REPO)] + ([(f"before: {args.before.name}", args.before)] if args.before else [])
+        from boatland.campaign.plan import load_campaign
+
+        for access in args.accesses:
+            path = study_file(tmp, access, args.seeds)
+            c = load_campaign(path, load_scenario=load()[0])
+            db = load()[1](c.base)
+            steps = sum(c.scenario_for(s).n_steps(db) for s in c.trials())
+            for workers in args.workers:
+                for label, code in codes:
+                    load0 = load_text()
+                    wall, cpu = campaign(path, tmp / f"c{access:g}_{workers}_{len(label)}.h5", workers, code)
+                    rate = steps / wall
+                    print(f"| {access:,.0f} | {c.n_trials} × {steps / c.n_trials:,.0f} | {workers} | {label} | "
+                          f"{wall:.1f} | {cpu:.1f} | {rate:,.0f} | "
+                          f"{100 * rate / (workers * kernel_rate[access]):.0f} % | "
+                          f"{100 * steps / kernel_cpu_rate[access] / cpu:.0f} % | {load0} → {load_text()} |",
+                          flush=True)
+
+
+if __name__ == "__main__":
+    main()

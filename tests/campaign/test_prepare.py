@@ -1,0 +1,86 @@
+"""Work done once per campaign (issue 16): the radiation memory checked once, the kernel arrays and the
+pile's scattered-wave tables made once per case and shipped to the workers — the same trials, bit for bit,
+as a worker that makes everything itself. In-process; the executors' own tests (1 and 2 local workers,
+a real Dask cluster) are in test_runner.py."""
+
+import pickle
+
+import numpy as np
+import pytest
+
+import boatland.campaign.runner as runner
+import boatland.model.pile_diffraction as pd
+import boatland.trial.simulate as sim
+from boatland.campaign.plan import load_campaign
+from boatland.campaign.runner import check_cases, execute_trial, prepare_cases, run_campaign
+from boatland.scenario_check import load, resolve_database
+
+from test_runner import campaign_file, same, summaries
+
+LOADERS = (load, resolve_database)
+
+
+def made_again(*args, **kwargs):
+    raise AssertionError("made again")
+
+
+def bits(row):
+    return {k: np.float64(v).tobytes() if isinstance(v, float) else v for k, v in row.items() if k != "wall_time"}
+
+
+@pytest.fixture
+def mini(tmp_path, monkeypatch):
+    monkeypatch.setattr(runner, "_CHECKED", {})
+    monkeypatch.setattr(runner, "_CACHE", {})
+    path = campaign_file(tmp_path, seeds=2, duration=30.0)
+    return path, load_campaign(path, load_scenario=load)
+
+
+def test_check_cases_makes_each_memory_once_per_campaign(mini, monkeypatch):
+    path, campaign = mini
+    calls = []
+    real = sim.prepare_memory
+    monkeypatch.setattr(sim, "prepare_memory", lambda *a: calls.append(a) or real(*a))
+    first = check_cases(campaign, resolve_database)
+    assert check_cases(campaign, resolve_database) == first and len(calls) == 1   # four cases, one memory
+    changed = path.with_name("changed.toml")
+    changed.write_text(path.read_text().replace("master_seed = 11", "master_seed = 12"))
+    check_cases(load_campaign(changed, load_scenario=load), resolve_database)
+    assert len(calls) == 2                                          # another campaign is checked again
+
+
+def test_shipped_case_data_gives_the_trial_a_worker_makes_itself(mini, monkeypatch):
+    path, campaign = mini
+    check_cases(campaign, resolve_database)
+    shared = prepare_cases(campaign, resolve_database)
+    assert sorted(shared) == [0, 1, 2, 3] and all(len(d.tables) == 1 for d in shared.values())
+    assert shared[0].tables[0] is shared[2].tables[0]            # same direction (Hs differs): one table
+    spec = campaign.trials()[3]                                     # case 1, second seed
+    own = execute_trial(str(path), spec, LOADERS)                   # memory, check, arrays, tables: its own
+    monkeypatch.setattr(runner, "_CACHE", {})
+    monkeypatch.setattr(pd, "_TABLES", {})
+    for name in ("prepare_memory", "check_radiation", "compile_motion"):
+        monkeypatch.setattr(sim, name, made_again)
+    monkeypatch.setattr(pd, "pile_scattered_components", made_again)
+    shipped = execute_trial(str(path), spec, LOADERS, None, pickle.loads(pickle.dumps(shared[spec.case])))
+    assert shipped["status"] == 0 and bits(shipped) == bits(own)
+
+
+def test_a_case_that_cannot_be_prepared_runs_as_before(mini, tmp_path, monkeypatch):
+    """Its trials make everything themselves (and would meet and record the same error): the store is the
+    same as with every case prepared."""
+    path, campaign = mini
+    run_campaign(campaign, tmp_path / "all.h5", loaders=LOADERS, workers=1)
+    real = sim.pile_tables
+
+    def refuse_case_2(scenario, db):                                # Hs 0.6 m, head seas
+        if (scenario.document["sea"]["Hs"], scenario.document["sea"]["relative_direction_deg"]) == (0.6, 180.0):
+            raise RuntimeError("cannot prepare")
+        return real(scenario, db)
+
+    monkeypatch.setattr(sim, "pile_tables", refuse_case_2)
+    monkeypatch.setattr(runner, "_CACHE", {})
+    monkeypatch.setattr(pd, "_TABLES", {})
+    assert sorted(prepare_cases(campaign, resolve_database)) == [0, 1, 3]
+    run_campaign(campaign, tmp_path / "some.h5", loaders=LOADERS, workers=1)
+    same(summaries(tmp_path / "all.h5"), summaries(tmp_path / "some.h5"))
