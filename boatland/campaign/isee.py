@@ -107,9 +107,10 @@ def trial_number(case: int, level: int, sample: int) -> int:
     return (case * MAX_LEVELS + level) * MAX_SAMPLES + sample
 
 
-def sample_seed(master_seed: int, case: int, level: int, sample: int) -> np.random.SeedSequence:
-    """The seed sequence of one sample (module docstring)."""
-    return np.random.SeedSequence(master_seed, spawn_key=(ISEE_KEY, case, level, sample))
+def sample_seed(master_seed: int, case: int, level: int, sample: int, plain: bool = False) -> np.random.SeedSequence:
+    """The seed sequence of one sample (module docstring); ``plain``: of a plain Monte Carlo sample of the same
+    sea (:func:`execute_sample`), a stream of its own."""
+    return np.random.SeedSequence(master_seed, spawn_key=(ISEE_KEY + int(plain), case, level, sample))
 
 
 @dataclass(frozen=True)
@@ -245,9 +246,14 @@ def _events_text(result, t_access: float) -> str:
     return "; ".join(f"{e.t - t_access:.2f} {e.kind} c{e.contact}" for e in ev[:6])[:200]
 
 
-def execute_sample(source: str, spec: SampleSpec, loaders) -> dict:
+def execute_sample(source: str, spec: SampleSpec, loaders, plain: bool = False) -> dict:
     """One ISEE sample of the campaign file ``source``: draw u, the linear indicators, the time-domain
-    trial on exactly that sea; its store row (status −1 and the error if it failed; never raises)."""
+    trial on exactly that sea; its store row (status −1 and the error if it failed; never raises).
+
+    ``plain``: a plain Monte Carlo sample of the same Gaussian sea instead, u ~ N(0, I) (the brute force
+    the estimator is checked against): ``isee_event`` −1, ``isee_log_pbar`` NaN, ``isee_n`` the elementary
+    events of D it exceeds (0 if none: then the linear model sees no slip, and a time-domain incident there
+    would lie outside the sampling domain)."""
     from boatland.trial.simulate import BlowUpError, check_radiation, prepare_memory, simulate
 
     wall0 = time.perf_counter()
@@ -258,14 +264,20 @@ def execute_sample(source: str, spec: SampleSpec, loaders) -> dict:
             ctx = _context(source, loaders)
             campaign: Campaign = ctx["campaign"]
             names = incident_names(campaign)
-            ss = sample_seed(campaign.master_seed, spec.case, spec.level, spec.sample)
+            ss = sample_seed(campaign.master_seed, spec.case, spec.level, spec.sample, plain)
             model = _models(ctx, campaign, spec.case, spec.hs, loaders)
             lm = model.margins
-            u, e, log_pbar = draw(lm, np.random.default_rng(ss))
-            ind = lm.indicators(u, e)
-            r, k = divmod(e, lm.n_steps)
-            row.update({"isee_event": int(e), "isee_margin": lm.names[r],
-                        "isee_t": float(lm.steps[k] * lm.dt - model.t_access), "isee_n": ind.n_exceeded,
+            if plain:
+                u, e, log_pbar = np.random.default_rng(ss).standard_normal(lm.dim), -1, math.nan
+                ind = lm.indicators(u)
+                r, k = -1, 0
+            else:
+                u, e, log_pbar = draw(lm, np.random.default_rng(ss))
+                ind = lm.indicators(u, e)
+                r, k = divmod(e, lm.n_steps)
+            row.update({"isee_event": int(e), "isee_margin": lm.names[r] if r >= 0 else "",
+                        "isee_t": float(lm.steps[k] * lm.dt - model.t_access) if r >= 0 else math.nan,
+                        "isee_n": ind.n_exceeded,
                         "isee_log_pbar": float(log_pbar), "lin_first_slip": int(ind.first_slip),
                         "lin_square": int(ind.square), "lin_first_incident": int(ind.first_incident),
                         "lin_t_first_slip": ind.t_first_slip - model.t_access})
