@@ -68,7 +68,8 @@ from boatland.campaign.store import INCIDENT_PREFIX, CampaignStore
 from boatland.errors import BoatlandInputError
 from boatland.freqdomain.isee import IseeEstimate, draw, estimate
 from boatland.freqdomain.margins import LandedMargins, landed_margins
-from boatland.freqdomain.screening import LandingSetup, screening_grid, sea_response
+from boatland.freqdomain.screening import LandingSetup, incident_probability, slip_transfer, spectral_moments
+from boatland.freqdomain.screening import limiting_hs as fd_limiting_hs
 from boatland.model.gaussian_sea import GaussianSea
 from boatland.model.seastate import SeaState
 from boatland.reproducible import single_threaded
@@ -644,13 +645,31 @@ def _summaries(campaign, table, levels, refs, curves, names, loaders):
     return runs, lim
 
 
-def _case_setup(campaign, c, hs, loaders, dbs):
-    sc = level_scenario(campaign, c, hs)
-    key = str(sc.vessel.database_path or sc.vessel.database)
+def _fd_case(campaign, c, loaders, dbs):
+    """The screening's view of case ``c``, cached: (spectral moments for Hs = 1 (1, 1, R, 3), capacities, Tp,
+    relative direction, access) — one long-crested spectral part only (else None)."""
+    key = ("fd", c)
     if key not in dbs:
-        dbs[key] = loaders[1](sc)
-    db = dbs[key]
-    return sc, db, LandingSetup.from_scenario(sc, db)
+        dbs[key] = None
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                sc = level_scenario(campaign, c, None)
+                dkey = str(sc.vessel.database_path or sc.vessel.database)
+                if dkey not in dbs:
+                    dbs[dkey] = loaders[1](sc)
+                db = dbs[dkey]
+                setup = LandingSetup.from_scenario(sc, db)
+                parts = sc.sea.waves.parts
+                if len(parts) == 1 and parts[0].spreading is None:
+                    p = parts[0]
+                    beta = (p.direction_deg - setup.heading_deg) % 360.0
+                    tr = slip_transfer(db, setup, beta_deg=[beta])
+                    m, _ = spectral_moments(tr, [p.Tp], sea=p, water_depth=sc.wave_model(db).water_depth, g=db.g)
+                    dbs[key] = (m, tr.capacity, p.Tp, beta, _access(campaign, sc))
+        except Exception:  # noqa: BLE001 — the screening is a comparison; NaN where it cannot answer
+            dbs[key] = None
+    return dbs[key]
 
 
 def _access(campaign, sc) -> float:
@@ -658,35 +677,23 @@ def _access(campaign, sc) -> float:
 
 
 def _screening_p(campaign, c, hs, statistics, loaders, dbs) -> float:
-    """The frequency-domain screening's P(slip or roll within the access) of the run (four margins per
-    contact at μ, :func:`boatland.freqdomain.screening.sea_response`)."""
-    try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            sc, db, setup = _case_setup(campaign, c, hs, loaders, dbs)
-            return float(sea_response(db, setup, sc.sea.waves.parts, statistics=statistics,
-                                      access_duration=_access(campaign, sc),
-                                      water_depth=sc.wave_model(db).water_depth).p_access)
-    except Exception:  # noqa: BLE001 — the screening is a comparison; NaN where it cannot answer
+    """The frequency-domain screening's P(slip or roll within the access) of the run at ``hs`` (four
+    margins per contact at μ, Grøtting 2015 §3.2.1, :func:`boatland.freqdomain.screening.incident_probability`)."""
+    fd = _fd_case(campaign, c, loaders, dbs)
+    if fd is None or hs is None:
         return math.nan
+    m, cap, tp, _, access = fd
+    return float(incident_probability(hs, m, cap, [tp], statistics=statistics, access_duration=access)[1][0, 0])
 
 
 def _screening_limit(campaign, c, statistics, loaders, dbs) -> float:
-    """The screening's limiting Hs of the case at ``accept`` (one long-crested part)."""
-    try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            sc, db, setup = _case_setup(campaign, c, None, loaders, dbs)
-            parts = sc.sea.waves.parts
-            if len(parts) != 1 or parts[0].spreading is not None:
-                return math.nan
-            p = parts[0]
-            beta = (p.direction_deg - setup.heading_deg) % 360.0
-            t = screening_grid(db, setup, [p.Tp], [beta], accept=campaign.isee.accept, statistics=statistics, sea=p,
-                               access_duration=_access(campaign, sc), water_depth=sc.wave_model(db).water_depth)
-            return float(t.Hs[0, 0])
-    except Exception:  # noqa: BLE001
+    """The screening's limiting Hs of the case at ``accept`` (:func:`boatland.freqdomain.screening.limiting_hs`)."""
+    fd = _fd_case(campaign, c, loaders, dbs)
+    if fd is None:
         return math.nan
+    m, cap, tp, beta, access = fd
+    return float(fd_limiting_hs(m, cap, [tp], [beta], accept=campaign.isee.accept, statistics=statistics,
+                                access_duration=access).Hs[0, 0])
 
 
 # ------------------------------------------------------------------------------------ looking at samples

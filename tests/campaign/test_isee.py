@@ -107,6 +107,10 @@ def test_the_store_holds_samples_runs_and_limits(reference):
     rows = t[(t["case"] == r0["case"]) & (t["level"] == r0["level"])]
     w = np.exp(rows["isee_log_pbar"]) / rows["isee_n"]
     assert np.mean(w * np.isfinite(rows["incident: first slip"])) == pytest.approx(r0["first slip: P"], rel=1e-12)
+    # the linear first incident lies between its bounds: the largest single elementary probability and Rice's
+    for r_ in runs:
+        assert r_["largest elementary P"] <= r_["linear first incident: P hi"]
+        assert r_["linear first incident: P lo"] <= r_["rice bound"]
     # the time domain's first slip is the linear model's (beside the guard's margin) in nearly every sample
     agree = np.mean(np.isfinite(t["incident: first slip"]) == (t["lin_first_slip"] == 1))
     assert agree > 0.9
