@@ -64,7 +64,7 @@ ISEE_SCHEMA = Table({
     "batch": Key(int, default=20, ge=1, le=1000, doc="samples per round (a run stops only after a whole batch)"),
     "min_samples": Key(int, default=40, ge=1, le=100000, doc="samples of a run before it may stop"),
     "max_samples": Key(int, default=2000, ge=1, le=100000, doc="samples of a run at most"),
-    "directions": Key(int, default=16, ge=3, le=64, doc="slip directions per contact (the inscribed M-gon)"),
+    "directions": Key(int, default=32, ge=3, le=64, doc="slip directions per contact (the inscribed M-gon)"),
     "kappa": Key(float, default=0.3, ge=0.0, le=3.0,
                  doc="guard of the sampling domain [standard deviations of each margin]"),
     "settle": Key(float, default=30.0, ge=0.0, le=600.0,
@@ -107,7 +107,7 @@ class IseeSettings:
     batch: int = 20
     min_samples: int = 40
     max_samples: int = 2000
-    directions: int = 16
+    directions: int = 32
     kappa: float = 0.3
     settle: float = 30.0
     incident: str = "first slip"
