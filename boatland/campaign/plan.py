@@ -23,6 +23,12 @@ File format (``scenarios/campaigns/*.toml``)::
     [store]
     keep_series = [0]                    # trial numbers whose full time series are stored
 
+    method = "isee"                      # optional: importance sampling of the first slip instead of
+                                         # N seeds per case (boatland.campaign.isee); then:
+    [isee]
+    target_cov = 0.1                     # stop a run when its estimate's CoV reaches this
+    accept = "best"                      # optional: find each case's limiting Hs at this probability
+
 Seeds (DESIGN.md §2): trial ``k`` of every case uses the wave seed
 ``SeedSequence(master_seed, spawn_key=(k,))`` — the same realisation family across cases (common
 random numbers: trends along an axis are not blurred by different seeds), and independent of the
@@ -40,17 +46,42 @@ from typing import Any
 
 import numpy as np
 
+from boatland.errors import BoatlandInputError
 from boatland.model.scenario import Scenario
 from boatland.model.tomlspec import Key, Problems, SpecError, Table, Vector, parse_toml_file, validate
 from boatland.trial.simulate import exposure_start
 
-__all__ = ["Campaign", "Case", "TrialSpec", "load_campaign", "trial_seed", "file_sha256", "CAMPAIGN_SCHEMA"]
+__all__ = ["Campaign", "Case", "IseeSettings", "TrialSpec", "load_campaign", "trial_seed", "file_sha256",
+           "CAMPAIGN_SCHEMA", "METHODS"]
+
+#: How a campaign estimates its probabilities: N wave seeds per case, or importance sampling of the
+#: elementary events of the first slip (:mod:`boatland.campaign.isee`).
+METHODS = ("monte-carlo", "isee")
+
+ISEE_SCHEMA = Table({
+    "target_cov": Key(float, default=0.1, gt=0.0, le=1.0,
+                      doc="stop a run once the coefficient of variation of its estimate is at most this"),
+    "batch": Key(int, default=20, ge=1, le=1000, doc="samples per round (a run stops only after a whole batch)"),
+    "min_samples": Key(int, default=40, ge=1, le=100000, doc="samples of a run before it may stop"),
+    "max_samples": Key(int, default=2000, ge=1, le=100000, doc="samples of a run at most"),
+    "directions": Key(int, default=32, ge=3, le=64, doc="slip directions per contact (the inscribed M-gon)"),
+    "kappa": Key(float, default=0.3, ge=0.0, le=3.0,
+                 doc="guard of the sampling domain [standard deviations of each margin]"),
+    "settle": Key(float, default=30.0, ge=0.0, le=600.0,
+                  doc="[s] settling time after the wave ramp before the access (its incidents are counted)"),
+    "incident": Key(str, default="first slip", doc="the incident definition the stopping rule and the limiting Hs use"),
+    "accept": Key((float, str), doc="accepted probability of the incident per access (or best / conservative / "
+                                    "non-conservative): find each case's limiting Hs"),
+    "levels": Key(int, default=4, ge=1, le=12, doc="runs along Hs per case at most, for the limiting Hs"),
+}, optional=True)
 
 CAMPAIGN_SCHEMA = Table({
     "name": Key(str, required=True, doc="campaign name"),
     "description": Key(str, default="", doc="one line shown in reports"),
     "scenario": Key(str, required=True, doc="base scenario file, relative to the campaign file"),
-    "seeds": Key(int, required=True, ge=1, le=100000, doc="trials (wave seeds) per case"),
+    "method": Key(str, default="monte-carlo", choices=METHODS,
+                  doc="monte-carlo: N wave seeds per case; isee: importance sampling of the first slip"),
+    "seeds": Key(int, ge=1, le=100000, doc="trials (wave seeds) per case (monte-carlo; required there)"),
     "master_seed": Key(int, default=0, ge=0, doc="master seed of every trial's wave seed"),
     "duration": Key((int, float), gt=0.0, doc="[s] access duration: the exposure to the full sea; every trial "
                                               "runs its settling and wave ramp first, then this long"),
@@ -63,7 +94,25 @@ CAMPAIGN_SCHEMA = Table({
     "store": Table({
         "keep_series": Vector(scalar=True, ge=0.0, doc="trial numbers whose full time series are stored"),
     }, optional=True),
+    "isee": ISEE_SCHEMA,
 })
+
+
+@dataclass(frozen=True)
+class IseeSettings:
+    """The ``[isee]`` table of a campaign (:data:`ISEE_SCHEMA` has the meaning of each field); ``accept``
+    is a probability in (0, 1) or None."""
+
+    target_cov: float = 0.1
+    batch: int = 20
+    min_samples: int = 40
+    max_samples: int = 2000
+    directions: int = 32
+    kappa: float = 0.3
+    settle: float = 30.0
+    incident: str = "first slip"
+    accept: float | None = None
+    levels: int = 4
 
 
 def file_sha256(path: str | Path) -> str:
@@ -125,6 +174,9 @@ class Campaign:
     access : float or None
         The exposure of every trial to the full sea [s] (``duration``); None: the base scenario's
         duration is the whole run.
+    method : {"monte-carlo", "isee"}
+    isee : IseeSettings
+        Settings of ``method = "isee"`` (defaults when the file has no ``[isee]``).
     """
 
     name: str
@@ -139,6 +191,18 @@ class Campaign:
     document: dict
     access: float | None = None
     _exposure: dict = field(default_factory=dict, repr=False)   # case → exposure_start (scenario_for)
+    method: str = "monte-carlo"
+    isee: IseeSettings = IseeSettings()
+
+    def with_method(self, method: str) -> "Campaign":
+        """The same campaign estimated by ``method`` (the CLI's ``--method``; part of :meth:`digest`)."""
+        import dataclasses
+
+        if method not in METHODS:
+            raise SpecError(self.source, [("method", f"must be one of {', '.join(METHODS)}, got {method!r}")])
+        if method == "monte-carlo" and "seeds" not in self.document:
+            raise SpecError(self.source, [("seeds", "missing: a monte-carlo campaign runs this many trials per case")])
+        return dataclasses.replace(self, method=method)
 
     @property
     def cases(self) -> list[Case]:
@@ -191,7 +255,8 @@ class Campaign:
         a resume never mixes results of changed inputs."""
         text = json.dumps(self.document, sort_keys=True, default=str)
         files = "\n".join(f"{p.name} {file_sha256(p)}" for p in self.input_files()[2:])
-        return hashlib.sha256(f"{text}\n{self.base.digest()}\n{files}".encode()).hexdigest()
+        method = "" if self.method == "monte-carlo" else f"\nmethod {self.method}"
+        return hashlib.sha256(f"{text}\n{self.base.digest()}\n{files}{method}".encode()).hexdigest()
 
 
 def load_campaign(path: str | Path, *, load_scenario) -> Campaign:
@@ -218,6 +283,10 @@ def load_campaign(path: str | Path, *, load_scenario) -> Campaign:
     for name, table in (("set", raw_set), ("axes", raw_axes)):
         if not isinstance(table, dict):
             problems.add(name, f"must be a table of key paths, got {type(table).__name__}")
+    method = data.get("method", "monte-carlo")
+    if method == "monte-carlo" and "seeds" not in data and not problems.has("seeds"):
+        problems.add("seeds", "missing: a monte-carlo campaign runs this many trials (wave seeds) per case")
+    isee = _isee_settings(data.get("isee") or {}, problems)
     problems.raise_if_any()
     base_path = (path.parent / data["scenario"]).resolve()
     if not base_path.is_file():
@@ -246,14 +315,30 @@ def load_campaign(path: str | Path, *, load_scenario) -> Campaign:
         axes[key] = list(values)
     problems.raise_if_any()
     keep = tuple(int(v) for v in np.atleast_1d((data.get("store") or {}).get("keep_series", [])))
-    n_trials = int(np.prod([len(v) for v in axes.values()])) * int(data["seeds"])
+    n_trials = int(np.prod([len(v) for v in axes.values()])) * int(data.get("seeds", 1))
     bad = [k for k in keep if k >= n_trials]
     if bad:
         raise SpecError(str(path), [("store.keep_series", f"trial numbers {bad} do not exist (0 … {n_trials - 1})")])
     return Campaign(name=data["name"], description=data.get("description", ""), source=str(path),
-                    scenario_path=base_path, base=base, axes=axes, seeds=int(data["seeds"]),
+                    scenario_path=base_path, base=base, axes=axes, seeds=int(data.get("seeds", 1)),
                     master_seed=int(data.get("master_seed", 0)), keep_series=keep, document=doc,
-                    access=float(data["duration"]) if "duration" in data else None)
+                    access=float(data["duration"]) if "duration" in data else None, method=method, isee=isee)
+
+
+def _isee_settings(d: dict, problems: Problems) -> IseeSettings:
+    """The validated ``[isee]`` table (its problems into ``problems``)."""
+    values = {k: v for k, v in d.items() if k in IseeSettings.__dataclass_fields__}
+    accept = values.pop("accept", None)
+    if accept is not None:
+        from boatland.freqdomain.screening import accept_probability
+
+        try:
+            values["accept"] = accept_probability(accept)
+        except BoatlandInputError as exc:
+            problems.add("isee.accept", str(exc))
+    if values.get("min_samples", 40) > values.get("max_samples", 2000):
+        problems.add("isee.min_samples", f"must be ≤ isee.max_samples = {values.get('max_samples', 2000)}")
+    return IseeSettings(**values)
 
 
 def _apply(scenario: Scenario, changes: dict, problems: Problems, where: str) -> Scenario | None:

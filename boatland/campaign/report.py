@@ -8,6 +8,17 @@
 - ``p_vs_hs.png``: P(incident) against Hs with intervals, one line per combination of the other axes;
 - ``limiting_hs_polar.png``: limiting Hs against the heading, one line per Tp (with a direction axis);
 - ``time_to_incident.png``: empirical distribution of the time to the first incident per case.
+
+A campaign by importance sampling (``method = "isee"``, :mod:`boatland.campaign.isee`) gets instead:
+
+- ``isee_runs.csv`` / ``.md``: per run (case × Hs level) the estimate of every incident with its CoV and
+  95 % interval, the linear model's first slip (friction circle) and the screening's square, the sampling
+  domain, the bounds (largest elementary probability, Rice), the frequency-domain screening (Rayleigh,
+  Rice, Vanmarcke) and how many time-domain slips the linear model did not have;
+- ``isee_limits.csv`` / ``.md`` (with ``accept``): the limiting Hs per case from the time domain with its
+  interval, beside the linear model's and the screening's;
+- ``p_vs_hs.png``: the estimates against Hs; ``limiting_hs_polar.png``: the limiting Hs against the
+  heading, time domain (with intervals) and screening, one colour per Tp.
 """
 
 from __future__ import annotations
@@ -28,7 +39,8 @@ __all__ = ["read_store", "write_report", "REPORT_FILES"]
 
 #: Every file :func:`write_report` may write into its folder.
 REPORT_FILES = ("cases.csv", "cases.md", "limiting_hs.csv", "limiting_hs.md", "p_vs_hs.png",
-                "limiting_hs_polar.png", "time_to_incident.png")
+                "limiting_hs_polar.png", "time_to_incident.png", "isee_runs.csv", "isee_runs.md", "isee_limits.csv",
+                "isee_limits.md")
 
 HS_KEY = "sea.Hs"
 DIR_KEYS = ("sea.relative_direction_deg", "sea.direction_deg")
@@ -52,6 +64,7 @@ def read_store(path: str | Path) -> dict:
                                          "the campaign first")
             trials = f["trials"][()]
             stats = f["stats"][()] if "stats" in f else None
+            limits = f["isee_limits"][()] if "isee_limits" in f else None
     except OSError as exc:
         raise BoatlandInputError(f"{path}: not a readable HDF5 file ({exc})") from None
     if stats is None:
@@ -63,7 +76,10 @@ def read_store(path: str | Path) -> dict:
         header["incidents"].split("\n")
     except (KeyError, ValueError, TypeError, AttributeError):
         raise BoatlandInputError(f"{path}: a damaged campaign store (its plan or incident list is missing)") from None
-    return {"header": header, "trials": trials, "stats": stats, "plan": plan}
+    out = {"header": header, "trials": trials, "stats": stats, "plan": plan}
+    if limits is not None:
+        out["isee_limits"] = limits
+    return out
 
 
 def write_report(store: str | Path, out_dir: str | Path, *, incident: str | None = None,
@@ -81,6 +97,8 @@ def write_report(store: str | Path, out_dir: str | Path, *, incident: str | None
     data = read_store(store)
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
+    if data["header"].get("method") == "isee":
+        return _isee_report(data, out, incident, figures)
     stats, plan = data["stats"], data["plan"]
     names = data["header"]["incidents"].split("\n")
     if incident is None:
@@ -212,3 +230,85 @@ def _save(fig, path: Path) -> Path:
     fig.savefig(path, dpi=110)
     plt.close(fig)
     return path
+
+
+# ---------------------------------------------------------------------------------------- isee
+def _isee_report(data, out: Path, incident: str | None, figures: bool) -> list[Path]:
+    runs, plan = data["stats"], data["plan"]
+    names = data["header"]["incidents"].split("\n")
+    settings = json.loads(data["header"].get("isee", "{}"))
+    inc = incident or settings.get("incident", "first slip")
+    if inc not in names:
+        raise BoatlandInputError(f"incident {inc!r} is not one of the campaign's: {', '.join(names)}")
+    head = ["case", "label", "Hs [m]", "samples", "failed", f"P({inc})", "CoV", "P lo", "P hi",
+            "linear first slip (circle)", "linear square (screening's margins)", "sampling domain",
+            "largest elementary P", "Rice bound", "screening Rayleigh", "screening Rice", "screening Vanmarcke",
+            "TD slips outside the linear slip", "CPU [s]"]
+    rows = [[r["case"], r["label"], r["hs"], r["samples"], r["failed"], r[f"{inc}: P"], r[f"{inc}: CoV"],
+             r[f"{inc}: P lo"], r[f"{inc}: P hi"], r["linear first slip: P"], r["linear square: P"], r["domain: P"],
+             r["largest elementary P"], r["rice bound"], r["screening rayleigh"], r["screening rice"],
+             r["screening vanmarcke"], r["TD slip outside linear slip"], r["wall time"]] for r in runs]
+    files = _write_tables(rows, head, out, "isee_runs",
+                          f"ISEE runs: P({inc} within the access), time domain on the sampled seas (95 % interval), "
+                          "beside the linear model, its bounds and the frequency-domain screening")
+    lim = data.get("isee_limits")
+    if lim is not None:
+        axes = [a for a in plan["axes"]]
+        head = ["case", "label", *axes, "limiting Hs [m]", "lo", "hi", "linear model [m]", "lo", "hi",
+                "screening Rayleigh [m]", "screening Rice [m]", "screening Vanmarcke [m]", "levels", "samples"]
+        rows = [[L["case"], L["label"], *[L[f"axis: {a}"] for a in axes], L["limiting Hs"], L["limiting Hs lo"],
+                 L["limiting Hs hi"], L["linear limiting Hs"], L["linear limiting Hs lo"], L["linear limiting Hs hi"],
+                 L["screening rayleigh Hs"], L["screening rice Hs"], L["screening vanmarcke Hs"], L["levels"],
+                 L["samples"]] for L in lim]
+        acc = float(lim["accept"][0]) if lim.size else math.nan
+        files += _write_tables(rows, head, out, "isee_limits",
+                               f"Limiting Hs at P({inc} within the access) = {acc:g}: time domain by ISEE (95 % "
+                               "interval), the linear model, the frequency-domain screening")
+    if figures:
+        files += _isee_figures(runs, lim, plan, inc, out)
+    return files
+
+
+def _isee_figures(runs, lim, plan, inc, out):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    files = []
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    for c in np.unique(runs["case"]):
+        r = runs[runs["case"] == c]
+        r = r[np.argsort(r["hs"])]
+        p, lo, hi = r[f"{inc}: P"], r[f"{inc}: P lo"], r[f"{inc}: P hi"]
+        ax.errorbar(r["hs"], p, yerr=[np.maximum(p - lo, 0), np.maximum(hi - p, 0)], marker="o", capsize=3,
+                    label=_fmt(r["label"][0]) or "base")
+    ax.set(xlabel="Hs [m]", ylabel=f"P({inc} within the access)", yscale="log",
+           title="ISEE: time domain on the sampled seas (95 %)")
+    ax.grid(alpha=0.3, which="both")
+    if runs.size <= 40:
+        ax.legend(fontsize=7)
+    files.append(_save(fig, out / "p_vs_hs.png"))
+    axes = list(plan["axes"])
+    dkey = next((k for k in DIR_KEYS if k in axes), None)
+    if lim is not None and dkey is not None:
+        tkey = next((k for k in TP_KEYS if k in axes), None)
+        fig = plt.figure(figsize=(6, 6))
+        ax = fig.add_subplot(projection="polar")
+        tps = sorted({float(x) for x in lim[f"axis: {tkey}"]}) if tkey else [None]
+        for i, tp in enumerate(tps):
+            sel = lim if tp is None else lim[lim[f"axis: {tkey}"] == tp]
+            sel = sel[np.argsort(sel[f"axis: {dkey}"])]
+            th = np.radians(sel[f"axis: {dkey}"])
+            colour = f"C{i % 10}"
+            label = "all" if tp is None else f"Tp {tp:g} s"
+            ax.errorbar(th, sel["limiting Hs"], yerr=[np.maximum(sel["limiting Hs"] - sel["limiting Hs lo"], 0),
+                                                       np.maximum(sel["limiting Hs hi"] - sel["limiting Hs"], 0)],
+                        marker="o", color=colour, capsize=2, label=f"{label}: time domain (ISEE)")
+            ax.plot(th, sel["screening rayleigh Hs"], ls="--", color=colour, lw=1, label=f"{label}: screening")
+        ax.set_theta_zero_location("N")
+        acc = float(lim["accept"][0])
+        ax.set_title(f"limiting Hs [m] at P({inc}) = {acc:g} per access\n(heading relative to the bow)", fontsize=9)
+        ax.legend(fontsize=6, loc="lower left", bbox_to_anchor=(-0.1, -0.15), ncol=2)
+        files.append(_save(fig, out / "limiting_hs_polar.png"))
+    return files

@@ -8,6 +8,9 @@ Layout of ``results.h5``:
 - ``/trials``: one row per finished trial (:data:`ROW_FIELDS` + one column per incident definition),
   sorted by trial number;
 - ``/stats``: one row per case (written by :func:`boatland.campaign.runner.run_campaign` at the end);
+- a campaign by importance sampling (``method = "isee"``, :mod:`boatland.campaign.isee`) has one row per
+  sample in ``/trials`` with its extra columns (:data:`boatland.campaign.isee.ISEE_FIELDS`), its
+  estimates per run in ``/isee_runs`` and its limiting Hs per case in ``/isee_limits``;
 - ``/series/trial_<n>``: full time series of the trials the campaign keeps.
 
 Crash safety. Every finished trial is first appended as one JSON line to ``results.h5.journal`` and
@@ -119,16 +122,20 @@ class StoreLock:
         self.fd = None
 
 
-def row_dtype(incident_names) -> np.dtype:
-    return np.dtype([(n, t) for n, t, _ in ROW_FIELDS] + [(INCIDENT_PREFIX + n, "f8") for n in incident_names])
+def row_dtype(incident_names, extra_fields=()) -> np.dtype:
+    """Columns of ``/trials``: :data:`ROW_FIELDS`, one per incident definition, then ``extra_fields``
+    ((name, numpy type, meaning) of a method's own columns)."""
+    return np.dtype([(n, t) for n, t, _ in ROW_FIELDS] + [(INCIDENT_PREFIX + n, "f8") for n in incident_names]
+                    + [(n, t) for n, t, _ in extra_fields])
 
 
 class CampaignStore:
     """A store bound to one campaign (by its digest). Use :meth:`open`."""
 
     def __init__(self, path: Path, header: dict, incident_names: list[str], rows: dict[int, dict],
-                 lock: StoreLock | None = None):
+                 lock: StoreLock | None = None, extra_fields=()):
         self.path = Path(path)
+        self.extra_fields = tuple(extra_fields)
         self.lock = lock
         self.header = header
         self.incident_names = list(incident_names)
@@ -139,8 +146,9 @@ class CampaignStore:
 
     # ------------------------------------------------------------------ opening
     @classmethod
-    def open(cls, path: str | Path, header: dict, incident_names: list[str]) -> "CampaignStore":
+    def open(cls, path: str | Path, header: dict, incident_names: list[str], extra_fields=()) -> "CampaignStore":
         """Open (or create) the store for the campaign ``header`` describes; merge any journal.
+        ``extra_fields``: (name, numpy type, meaning) of a method's own columns of ``/trials``.
 
         Raises
         ------
@@ -155,14 +163,14 @@ class CampaignStore:
         lock = StoreLock(path)
         lock.acquire()
         try:
-            store = cls._open_locked(path, header, incident_names, rows, lock)
+            store = cls._open_locked(path, header, incident_names, rows, lock, extra_fields)
         except BaseException:
             lock.release()
             raise
         return store
 
     @classmethod
-    def _open_locked(cls, path, header, incident_names, rows, lock) -> "CampaignStore":
+    def _open_locked(cls, path, header, incident_names, rows, lock, extra_fields=()) -> "CampaignStore":
         remove_stale_parts(path)      # left by a rewrite that was killed (only we can be writing now)
         if path.exists():
             import h5py
@@ -189,7 +197,7 @@ class CampaignStore:
                 for rec in data:
                     row = {k: _py(rec[k]) for k in data.dtype.names}
                     rows[row["trial"]] = row
-        store = cls(path, header, incident_names, rows, lock)
+        store = cls(path, header, incident_names, rows, lock, extra_fields)
         store._merge_journal()
         try:  # fail now, before any trial runs, if results cannot be written here
             with open(store.journal, "a", encoding="utf-8"):
@@ -201,7 +209,7 @@ class CampaignStore:
     def _merge_journal(self) -> None:
         if not self.journal.exists():
             return
-        names = {n for n, _, _ in ROW_FIELDS}
+        names = {n for n, _, _ in ROW_FIELDS + self.extra_fields}
         n_trials = int(self.header.get("n_trials", 0))
         with open(self.journal, "rb") as fh:
             for line in fh:
@@ -239,8 +247,9 @@ class CampaignStore:
                                      f"{len(self.rows) - 1} trials stored so far are kept — free space or fix "
                                      "the problem and run the same command again to resume") from None
 
-    def write(self, stats: np.ndarray | None = None) -> Path:
+    def write(self, stats: np.ndarray | None = None, datasets: dict | None = None) -> Path:
         """Rewrite the HDF5 file atomically from everything known, then empty the journal.
+        ``datasets``: further named arrays to write beside ``/stats`` (e.g. ``isee_runs``).
 
         Raises
         ------
@@ -258,7 +267,7 @@ class CampaignStore:
                 f"{need / 1e6:.3g} MB needed); the {len(self.rows)} finished trials are kept in {self.journal.name}: "
                 "free space and run the same command again")
         try:
-            self._write(table, stats, series)
+            self._write(table, stats, series, datasets or {})
         except OSError as exc:
             raise BoatlandInputError(
                 f"{self.path}: writing the store failed ({exc.strerror or exc}); the {len(self.rows)} finished "
@@ -266,7 +275,7 @@ class CampaignStore:
         self._last_write = time.monotonic()
         return self.path
 
-    def _write(self, table, stats, series) -> None:
+    def _write(self, table, stats, series, datasets) -> None:
         import h5py
 
         with atomic_path(self.path) as tmp:
@@ -276,9 +285,11 @@ class CampaignStore:
                 for k, v in self.header.items():
                     f.attrs[k] = v
                 f.create_dataset("trials", data=table, maxshape=(None,), chunks=True)
-                f["trials"].attrs["columns"] = json.dumps({n: d for n, _, d in ROW_FIELDS})
+                f["trials"].attrs["columns"] = json.dumps({n: d for n, _, d in ROW_FIELDS + self.extra_fields})
                 if stats is not None:
                     f.create_dataset("stats", data=stats)
+                for name, data in datasets.items():
+                    f.create_dataset(name, data=data)
                 for src in series:
                     with h5py.File(src, "r") as s:
                         s.copy(s["/"], f, name=f"series/{src.stem}")
@@ -286,9 +297,9 @@ class CampaignStore:
             fh.flush()
             os.fsync(fh.fileno())
 
-    def finish(self, stats: np.ndarray | None) -> Path:
+    def finish(self, stats: np.ndarray | None, datasets: dict | None = None) -> Path:
         """Final write (with the statistics); removes the journal and the series folder."""
-        path = self.write(stats)
+        path = self.write(stats, datasets)
         self.journal.unlink(missing_ok=True)
         if self.series_dir.is_dir():
             shutil.rmtree(self.series_dir)
@@ -302,7 +313,7 @@ class CampaignStore:
     # ------------------------------------------------------------------ reading
     def table(self) -> np.ndarray:
         """All finished rows as a structured array sorted by trial."""
-        dt = row_dtype(self.incident_names)
+        dt = row_dtype(self.incident_names, self.extra_fields)
         out = np.zeros(len(self.rows), dtype=dt)
         for i, trial in enumerate(sorted(self.rows)):
             row = self.rows[trial]

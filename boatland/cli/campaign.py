@@ -25,6 +25,13 @@ def add_parser(sub) -> None:
     camp.add_argument("--report", type=Path, metavar="DIR", help="also write the report into DIR at the end")
     camp.add_argument("--allow-failures", action="store_true",
                       help="exit 0 even when trials failed (they are always reported and left out of the statistics)")
+    camp.add_argument("--method", choices=("monte-carlo", "isee"),
+                      help="override the campaign file's method: monte-carlo (N seeds per case) or isee (importance "
+                           "sampling of the first slip: rare slips and the limiting Hs at an accepted risk, "
+                           "settings in the file's [isee])")
+    camp.add_argument("--save-worst", type=integer(0, 1000), default=0, metavar="N",
+                      help="isee: run the N heaviest samples again with their run logs (MCAP, 'boatland replay' for "
+                           "Rerun) into <store>.worst/")
     camp.set_defaults(func=cmd)
 
 
@@ -44,12 +51,22 @@ def cmd(args) -> int:
     with warnings.catch_warnings(record=True) as caught:     # shown as one line each once the file is good
         warnings.simplefilter("always")
         campaign = load_campaign(args.campaign, load_scenario=load)
+        if args.method:
+            campaign = campaign.with_method(args.method)
     for w in dict.fromkeys(str(w.message) for w in caught):
         print(f"warning: {w}", file=sys.stderr)
     store = args.output or Path(f"{campaign.name}.h5")
     side = [store.with_name(store.name + s) for s in (".journal", ".lock", ".series")]
+    isee = campaign.method == "isee"
+    if args.save_worst and not isee:
+        from boatland.errors import BoatlandInputError
+
+        raise BoatlandInputError("--save-worst: only with method isee (a Monte Carlo campaign keeps trials with "
+                                 "[store] keep_series)")
+    worst_dir = store.with_name(store.name + ".worst") if args.save_worst else None
     check_outputs([Output("-o", store), *[Output("-o (its side file)", p) for p in side],
-                   Output("--report", args.report, "folder", REPORT_FILES)], campaign.input_files())
+                   Output("--report", args.report, "folder", REPORT_FILES),
+                   Output("--save-worst", worst_dir, "folder")], campaign.input_files())
     for w in check_cases(campaign, resolve_database):
         print(f"warning: {w}", file=sys.stderr)
     workers = 1 if args.scheduler else (args.workers or os.cpu_count() or 1)
@@ -59,6 +76,8 @@ def cmd(args) -> int:
                  copies=min(workers, campaign.n_trials))
     where = f"Dask scheduler {args.scheduler}" if args.scheduler else \
         f"{args.workers or os.cpu_count()} local worker process(es)"
+    if isee:
+        return _isee(args, campaign, store, where, worst_dir)
     from contextlib import ExitStack
 
     from tqdm import tqdm
@@ -97,3 +116,81 @@ def cmd(args) -> int:
               "them)", file=sys.stderr)
         return 1
     return 0
+
+
+def _isee(args, campaign, store, where, worst_dir) -> int:
+    """``boatland campaign`` with method isee: the runs, their estimates, the limiting Hs, the heaviest samples."""
+    from contextlib import ExitStack
+
+    from tqdm import tqdm
+
+    from boatland.campaign.isee import run_isee
+    from boatland.campaign.report import write_report
+    from boatland.scenario_check import load, resolve_database
+
+    s = campaign.isee
+    with ExitStack() as stack:
+        bar = []
+
+        def progress(done, total):
+            if not bar:
+                print(f"campaign {campaign.name} (isee): {len(campaign.cases)} cases, incident {s.incident!r}, target "
+                      f"CoV {s.target_cov:g}" + (f", limiting Hs at P = {s.accept:g}" if s.accept is not None else "")
+                      + f" on {where} → {store}", file=sys.stderr)
+                bar.append(stack.enter_context(tqdm(total=total, unit="sample", file=sys.stderr, disable=None,
+                                                    dynamic_ncols=True)))
+            bar[0].total = max(total, bar[0].total or 0)
+            bar[0].n = done
+            bar[0].refresh()
+
+        result = run_isee(campaign, store, loaders=(load, resolve_database),
+                          executor="dask" if args.scheduler else "local", workers=args.workers,
+                          scheduler=args.scheduler, progress=progress)
+    from boatland.campaign.report import read_store
+
+    data = read_store(store)
+    runs = data["stats"]
+    n_failed = int(runs["failed"].sum())
+    print(f"wrote {store}: {len(result.rows)} samples in {len(runs)} runs"
+          + (f", {n_failed} failed (left out)" if n_failed else ""))
+    inc = s.incident
+    for r in runs:
+        label = r["label"].decode() or "base"
+        print(f"  case {r['case']} ({label}) Hs {r['hs']:.4g} m: P({inc}) = {r[f'{inc}: P']:.3g} "
+              f"[{r[f'{inc}: P lo']:.3g}, {r[f'{inc}: P hi']:.3g}] (CoV {r[f'{inc}: CoV']:.2g}, {r['samples']} samples); "
+              f"linear {r['linear first slip: P']:.3g}, screening (Rayleigh) {r['screening rayleigh']:.3g}")
+    if "isee_limits" in data:
+        for L in data["isee_limits"]:
+            print(f"  case {L['case']} ({L['label'].decode() or 'base'}): limiting Hs {L['limiting Hs']:.4g} m "
+                  f"[{L['limiting Hs lo']:.4g}, {L['limiting Hs hi']:.4g}] at P = {L['accept']:g}; linear "
+                  f"{L['linear limiting Hs']:.4g} m, screening (Rayleigh) {L['screening rayleigh Hs']:.4g} m")
+    if worst_dir is not None:
+        _save_worst(campaign, data["trials"], worst_dir, args.save_worst, inc)
+    if args.report:
+        files = write_report(store, args.report)
+        print(f"wrote {len(files)} report files to {args.report}")
+    if n_failed and not args.allow_failures:
+        print(f"boatland: error: {n_failed} samples failed (see the store; --allow-failures to accept them)",
+              file=sys.stderr)
+        return 1
+    return 0
+
+
+def _save_worst(campaign, table, folder: Path, n: int, incident: str) -> None:
+    """The ``n`` heaviest samples run again, exactly, each with its run log ``sample_<trial>.mcap``."""
+    from boatland.campaign.isee import rerun_sample, worst_samples
+    from boatland.record.mcap_log import McapLog
+    from boatland.scenario_check import load, resolve_database
+
+    folder.mkdir(exist_ok=True)
+    for trial in worst_samples(table, incident, n):
+        row = table[table["trial"] == trial][0]
+        path = folder / f"sample_{trial}.mcap"
+        log = McapLog(path)
+        try:
+            rerun_sample(campaign, row, (load, resolve_database), sinks=[log])
+        finally:
+            log.close()
+        w = float(__import__("math").exp(row["isee_log_pbar"]) / row["isee_n"])
+        print(f"wrote {path} (weight {w:.3g}; {row['events'].decode() or 'no events in the access'}; "
+              f"'boatland replay {path}' for Rerun)")

@@ -167,7 +167,7 @@ def pile_tables(scenario: Scenario, db: HydroDB) -> list:
 @pinned
 def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None = None,
              arrays: MotionArrays | None = None, progress: Callable[[int, int], None] | None = None,
-             sinks: Sequence[TrialSink] = (), progress_every: float = 0.1) -> Result:
+             sinks: Sequence[TrialSink] = (), progress_every: float = 0.1, waves=None) -> Result:
     r"""Run one landing trial.
 
     Equation of motion (DESIGN.md §1; Cummins 1962, seed 000 eq. 3.40; contact: seed 001 §2.5, §3.4):
@@ -196,6 +196,12 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
     sinks : sequence of TrialSink
         Receive the trial as it runs, in blocks of about one second of simulated time
         (:mod:`boatland.trial.sink`): a logger writes while the kernel integrates.
+    waves : wave model, optional
+        Waves to use instead of the scenario's sea (``scenario.wave_model(db)``), with the same interface
+        (``excitation``, ``realise``) — e.g. a :class:`~boatland.model.gaussian_sea.GaussianSea` driven by
+        given standard-normal coefficients, so that the trial runs on exactly the sea a rare-event
+        sampler chose (:mod:`boatland.campaign.isee`). The scenario still sets everything else (its
+        sea's ramp, the monopile's scattered wave). Its ``digest()`` goes into the provenance.
 
     Returns
     -------
@@ -216,7 +222,12 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
             check_radiation(scenario, db, memory, dt)
         arrays = motion_arrays(scenario, db, memory)
     x0g, y0g, psi = scenario.start_pose()
-    waves = scenario.wave_model(db)
+    override = waves is not None
+    if not override:
+        waves = scenario.wave_model(db)
+    elif scenario.sea is None:
+        raise BoatlandInputError(f"{scenario.source}: waves given for a scenario without a sea: its [sea] sets the "
+                                 "ramp and the pile's scattered wave")
     if waves is None:
         F = np.zeros((2 * n + 1, 6))
     else:
@@ -237,6 +248,9 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
         "radiation": scenario.radiation.method, "memory": scenario.radiation.memory,
         "waves_from": wave_start(scenario), "wave_ramp": scenario.simulation.start_ramp if waves is not None else 0.0,
     }
+    if override:
+        provenance["waves"] = f"{type(waves).__name__} {waves.digest()}" if hasattr(waves, "digest") \
+            else type(waves).__name__
     if progress is None and not sinks:
         out = arrays.run(dt, n, **kwargs)
     else:

@@ -1,0 +1,222 @@
+"""ISEE campaigns end to end (boatland.campaign.isee): the same store from 1 or 2 local workers and from
+a real Dask cluster, resume after SIGKILL, the limiting-Hs search, the report, the heaviest samples'
+run logs, bad input. Real processes throughout (boatland CLI, dask scheduler and workers)."""
+
+import math
+import signal
+import socket
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import h5py
+import numpy as np
+import pytest
+
+REPO = Path(__file__).resolve().parents[2]
+BASE = REPO / "scenarios" / "ctv_landing.toml"
+#: The ``dask`` command of this Python's environment (on PATH or not).
+DASK = str(Path(sys.executable).with_name("dask")) if Path(sys.executable).with_name("dask").exists() else "dask"
+
+
+def run(*args, timeout=900):
+    return subprocess.run([sys.executable, "-m", "boatland", *map(str, args)], capture_output=True, text=True,
+                          timeout=timeout)
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def same(a, b):
+    assert a.keys() == b.keys()
+    for name in a:
+        x, y = a[name], b[name]
+        assert x.dtype == y.dtype and x.shape == y.shape, name
+        assert x.tobytes() == y.tobytes(), name      # bit for bit (NaN included)
+
+
+def isee_file(tmp_path, name="isee", extra="", axes='"sea.relative_direction_deg" = [180.0, 90.0]'):
+    path = tmp_path / f"{name}.toml"
+    path.write_text(f"""
+name = "{name}"
+scenario = "{BASE}"
+method = "isee"
+master_seed = 17
+duration = 20.0
+[axes]
+{axes}
+[isee]
+target_cov = 0.3
+batch = 6
+min_samples = 12
+max_samples = 30
+settle = 10.0
+accept = 0.05
+levels = 3
+{extra}
+""")
+    return path
+
+
+def summaries(store):
+    """Everything in the store but the wall times (not reproducible)."""
+    with h5py.File(store, "r") as f:
+        t, stats = f["trials"][()], f["stats"][()]
+        lim = f["isee_limits"][()] if "isee_limits" in f else None
+    cols = {n: t[n] for n in t.dtype.names if n != "wall_time"}
+    cols.update({f"stats/{n}": stats[n] for n in stats.dtype.names if n != "wall time"})
+    if lim is not None:
+        cols.update({f"limits/{n}": lim[n] for n in lim.dtype.names})
+    return cols
+
+
+@pytest.fixture(scope="module")
+def reference(tmp_path_factory):
+    tmp = tmp_path_factory.mktemp("isee")
+    camp = isee_file(tmp)
+    r = run("campaign", camp, "-o", tmp / "one.h5", "--workers", "1", "--report", tmp / "rep", "--save-worst", "2")
+    assert r.returncode == 0, r.stderr
+    return camp, tmp / "one.h5", r
+
+
+def test_one_and_two_local_workers_give_the_same_store(reference, tmp_path):
+    camp, one, _ = reference
+    r = run("campaign", camp, "-o", tmp_path / "two.h5", "--workers", "2")
+    assert r.returncode == 0, r.stderr
+    same(summaries(one), summaries(tmp_path / "two.h5"))
+
+
+def test_the_store_holds_samples_runs_and_limits(reference):
+    camp, one, r = reference
+    with h5py.File(one, "r") as f:
+        t, runs, lim = f["trials"][()], f["stats"][()], f["isee_limits"][()]
+        assert f.attrs["method"] == "isee"
+    assert (t["status"] == 0).all() and (t["isee_n"] >= 1).all()
+    # whole batches per run, every run between min and max samples, levels in order along the search
+    for c in (0, 1):
+        lv = runs[runs["case"] == c]
+        assert list(lv["level"]) == list(range(len(lv))) and 1 <= len(lv) <= 3
+        assert ((lv["samples"] % 6 == 0) & (lv["samples"] >= 12) & (lv["samples"] <= 30)).all()
+        assert sorted(set(t["hs"][t["case"] == c])) == sorted(lv["hs"])
+    # weights: P̄/N; the estimate from the rows is the stored one
+    r0 = runs[0]
+    rows = t[(t["case"] == r0["case"]) & (t["level"] == r0["level"])]
+    w = np.exp(rows["isee_log_pbar"]) / rows["isee_n"]
+    assert np.mean(w * np.isfinite(rows["incident: first slip"])) == pytest.approx(r0["first slip: P"], rel=1e-12)
+    # the linear first incident lies between its bounds: the largest single elementary probability and Rice's
+    for r_ in runs:
+        assert r_["largest elementary P"] <= r_["linear first incident: P hi"]
+        assert r_["linear first incident: P lo"] <= r_["rice bound"]
+    # the time domain's first slip is the linear model's (beside the guard's margin) in nearly every sample
+    agree = np.mean(np.isfinite(t["incident: first slip"]) == (t["lin_first_slip"] == 1))
+    assert agree > 0.9
+    # limiting Hs: inside its interval, beside the linear model's and the screening's
+    for L in lim:
+        assert L["limiting Hs lo"] <= L["limiting Hs"] <= L["limiting Hs hi"]
+        assert 0.5 < L["limiting Hs"] / L["linear limiting Hs"] < 2 and math.isfinite(L["screening rayleigh Hs"])
+    assert "limiting Hs" in r.stdout and "P(first slip)" in r.stdout
+
+
+def test_report_and_heaviest_samples(reference):
+    camp, one, r = reference
+    rep = one.parent / "rep"
+    for name in ("isee_runs.csv", "isee_runs.md", "isee_limits.csv", "isee_limits.md", "p_vs_hs.png",
+                 "limiting_hs_polar.png"):
+        assert (rep / name).stat().st_size > 100, name
+    logs = sorted((one.parent / "one.h5.worst").glob("sample_*.mcap"))
+    assert len(logs) == 2
+    from boatland.record.reader import read_run_log
+
+    log = read_run_log(logs[0])
+    trial = int(logs[0].stem.split("_")[1])
+    with h5py.File(one, "r") as f:
+        t = f["trials"][()]
+    row = t[t["trial"] == trial][0]
+    # the log is the whole trial on the sample's sea, with its events
+    assert log.complete and abs(log.duration - (20.0 + 14.0 + 10.0 + 20.0)) < 0.06
+    assert log.summary["provenance"]["waves"].startswith("GaussianSea ")
+    slips = [t for t, _, text in log.events if "stick→slip" in text and t >= 44.0 - 1e-9]
+    if np.isfinite(row["incident: first slip"]):
+        assert slips and slips[0] - 44.0 == pytest.approx(row["incident: first slip"], abs=1e-9)
+    else:
+        assert not slips
+    assert str(logs[0]) in r.stdout
+
+
+def test_a_real_dask_cluster_gives_the_same_store(reference, tmp_path):
+    camp, one, _ = reference
+    port = free_port()
+    address = f"tcp://127.0.0.1:{port}"
+    procs = [subprocess.Popen([DASK, "scheduler", "--host", "127.0.0.1", "--port", str(port), "--no-dashboard"],
+                              stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)]
+    try:
+        time.sleep(2.0)
+        for _ in range(2):
+            procs.append(subprocess.Popen([DASK, "worker", address, "--nworkers", "1", "--nthreads", "1",
+                                           "--no-dashboard", "--memory-limit", "0"],
+                                          stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL))
+        r = run("campaign", camp, "-o", tmp_path / "dask.h5", "--scheduler", address)
+        assert r.returncode == 0, r.stderr
+    finally:
+        for p in procs[::-1]:
+            p.terminate()
+        for p in procs:
+            p.wait(timeout=30)
+    same(summaries(one), summaries(tmp_path / "dask.h5"))
+
+
+def test_resume_after_sigkill_equals_an_uninterrupted_run(reference, tmp_path):
+    camp, one, _ = reference
+    store = tmp_path / "killed.h5"
+    journal = store.with_name(store.name + ".journal")
+
+    def on_disk():
+        n = sum(1 for _ in open(journal)) if journal.exists() else 0
+        if store.exists():
+            with h5py.File(store, "r") as f:
+                n += len(f["trials"])
+        return n
+
+    rng = np.random.default_rng(4)
+    partial = []
+    for _ in range(3):
+        before = on_disk()
+        p = subprocess.Popen([sys.executable, "-m", "boatland", "campaign", str(camp), "-o", str(store),
+                              "--workers", "1"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        deadline = time.monotonic() + 180
+        while on_disk() == before and p.poll() is None and time.monotonic() < deadline:
+            time.sleep(0.05)
+        time.sleep(float(rng.uniform(0.0, 2.0)))
+        p.send_signal(signal.SIGKILL)
+        p.wait()
+        partial.append(on_disk())
+    r = run("campaign", camp, "-o", store, "--workers", "1")
+    assert r.returncode == 0, r.stderr
+    print("samples on disk after each kill:", partial)
+    assert any(0 < n < len(summaries(one)["trial"]) for n in partial), partial
+    same(summaries(one), summaries(store))
+
+
+@pytest.mark.parametrize("old, new, args, expected", [
+    ("accept = 0.05", "accept = 2.0", (), "isee.accept"),
+    ("levels = 3", 'levels = 3\nincident = "slip > 9 m"', (), "isee.incident"),
+    ("levels = 3", "levels = 3\ndirections = 2", (), "isee.directions"),
+    ("levels = 3", "levels = 3", ("--method", "monte-carlo"), "seeds"),
+])
+def test_bad_isee_campaigns_are_one_clear_error(tmp_path, old, new, args, expected):
+    camp = isee_file(tmp_path)
+    camp.write_text(camp.read_text().replace(old, new))
+    r = run("campaign", camp, "-o", tmp_path / "x.h5", *args)
+    assert r.returncode == 2 and expected in r.stderr and "Traceback" not in r.stderr, r.stderr
+    assert not (tmp_path / "x.h5").exists()
+
+
+def test_save_worst_needs_isee(tmp_path):
+    camp = tmp_path / "mc.toml"
+    camp.write_text(f'name = "mc"\nscenario = "{BASE}"\nseeds = 2\nduration = 10.0\n')
+    r = run("campaign", camp, "-o", tmp_path / "mc.h5", "--save-worst", "3")
+    assert r.returncode == 2 and "--save-worst" in r.stderr and "Traceback" not in r.stderr
