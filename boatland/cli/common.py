@@ -12,7 +12,7 @@ from boatland.errors import BoatlandInputError
 
 __all__ = ["DEFAULT_VESSEL", "resolve_db", "scenario_argument", "screening_options", "freq_load", "freq_sea",
            "freq_check", "freq_setup", "scenario_inputs", "load_guarded", "with_overrides", "check_memory",
-           "available_memory"]
+           "available_memory", "compile_notice", "kernels_cached"]
 
 DEFAULT_VESSEL = "ctv24"
 
@@ -190,3 +190,24 @@ def freq_setup(args, scenario, db):
     from boatland.freqdomain import LandingSetup
 
     return LandingSetup.from_scenario(scenario, db, roll_limit_deg=args.roll_limit)
+
+
+def kernels_cached() -> bool:
+    """Whether numba's on-disk cache holds the trial's main kernels for this source (a missing or stale
+    index means the next trial compiles them first, ~30 s). Unknown (numba internals changed): True."""
+    try:
+        from boatland.contact.fender import decide_modes
+        from boatland.integrate.cummins import run_cummins
+        from boatland.trial.events import track_landing
+        from boatland.waves.synthesis import _harmonic_sum
+
+        return all(bool(k._cache._cache_file._load_index())
+                   for k in (run_cummins, decide_modes, track_landing, _harmonic_sum))
+    except Exception:  # noqa: BLE001 - a notice only: never stop a run over it
+        return True
+
+
+def compile_notice() -> None:
+    """One line on stderr when the kernels have to be compiled before the first trial."""
+    if not kernels_cached():
+        print("compiling kernels (first run only, about half a minute) …", file=sys.stderr, flush=True)

@@ -7,7 +7,7 @@ import json
 from pathlib import Path
 
 from boatland.cli.common import DEFAULT_VESSEL, resolve_db
-from boatland.cli.guard import Output, check_outputs, positive
+from boatland.cli.guard import Output, check_outputs, no_subcommand, positive
 
 __all__ = ["add_parser", "cmd_import", "cmd_info", "cmd_build", "cmd_list"]
 
@@ -16,7 +16,7 @@ def add_parser(sub) -> None:
     hydro = sub.add_parser("hydro", help="hydrodynamic databases: import BEM output, summarise, build",
                            description="Hydrodynamic databases (BEMIO HDF5): import, summarise, build.")
     hsub = hydro.add_subparsers(title="hydro commands", metavar="HYDRO_COMMAND")
-    hydro.set_defaults(func=lambda a: hydro.print_help())
+    hydro.set_defaults(func=no_subcommand(hydro))
 
     from boatland.hydro import FORMATS
 

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from boatland.cli.guard import no_subcommand
+
 __all__ = ["add_parser", "check", "schema"]
 
 
@@ -12,7 +14,7 @@ def add_parser(sub) -> None:
                           description="Scenario files (TOML): check one without running it, or print the JSON "
                                       "Schema for editors.")
     ssub = scen.add_subparsers(title="scenario commands", metavar="SCENARIO_COMMAND")
-    scen.set_defaults(func=lambda a: scen.print_help())
+    scen.set_defaults(func=no_subcommand(scen))
     chk = ssub.add_parser("check", help="validate a scenario file and its physics against the database")
     chk.add_argument("file", type=Path)
     chk.set_defaults(func=check)
