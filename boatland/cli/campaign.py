@@ -6,7 +6,7 @@ import os
 import sys
 from pathlib import Path
 
-from boatland.cli.guard import Output, check_outputs, integer
+from boatland.cli.guard import Output, check_outputs, in_range, integer
 
 __all__ = ["add_parser", "cmd"]
 
@@ -25,6 +25,14 @@ def add_parser(sub) -> None:
     camp.add_argument("--report", type=Path, metavar="DIR", help="also write the report into DIR at the end")
     camp.add_argument("--allow-failures", action="store_true",
                       help="exit 0 even when trials failed (they are always reported and left out of the statistics)")
+    camp.add_argument("--target", type=in_range(0.0, 1.0, hi_open=True), default=0.1,
+                      help="accepted probability of the incident within the access, for the limiting Hs of the "
+                           "summary and --report (default 0.1)")
+    camp.add_argument("--width", type=in_range(0.0, 1.0, hi_open=True), default=0.2,
+                      help="width asked of the 95 %% interval of P: the summary says how many seeds that needs "
+                           "(default 0.2)")
+    camp.add_argument("--json", action="store_true",
+                      help="print the outcome (trials, failures, the decision table) as JSON instead of text")
     camp.set_defaults(func=cmd)
 
 
@@ -61,16 +69,25 @@ def cmd(args) -> int:
         f"{args.workers or os.cpu_count()} local worker process(es)"
     from contextlib import ExitStack
 
+    from boatland.cli.common import compile_notice
+
     from tqdm import tqdm
 
     with ExitStack() as stack:
         bar = []
 
+        resumed = []
+
         def progress(done, total):
             if not bar:        # the first call: the store is open (not another campaign's): say what runs
                 print(f"campaign {campaign.name}: {len(campaign.cases)} cases × {campaign.seeds} seeds = "
-                      f"{campaign.n_trials} trials of {campaign.base.simulation.duration:g} s on {where} → {store}"
-                      + (f" ({done} already done)" if done else ""), file=sys.stderr)
+                      f"{campaign.n_trials} trials of {longest.simulation.duration:g} s on {where} → {store}",
+                      file=sys.stderr)
+                resumed.append(done)
+                if done:
+                    print(f"resuming: {done} of {total} trials already in the store", file=sys.stderr)
+                if done < total:
+                    compile_notice()
                 bar.append(stack.enter_context(tqdm(total=total, unit="trial", file=sys.stderr, disable=None,
                                                     dynamic_ncols=True)))
             bar[0].n = done
@@ -82,16 +99,32 @@ def cmd(args) -> int:
     table = result.table()
     failed = failures(campaign, table)
     n_failed = sum(len(v) for v in failed.values())
-    print(f"wrote {store}: {len(table)} trials" + (f", {n_failed} failed (left out of every probability)"
-                                                   if n_failed else ""))
     for case, rows in sorted(failed.items()):
         label = campaign.cases[case].label() or "base"
         print(f"  case {case} ({label}): {len(rows)} of {campaign.seeds} trials failed: "
               + "; ".join(f"trial {t}: {why}" for t, why in rows[:3]) + (" …" if len(rows) > 3 else ""),
               file=sys.stderr)
-    if args.report:
-        files = write_report(store, args.report)
-        print(f"wrote {len(files)} report files to {args.report}")
+    from boatland.campaign.report import store_decision
+
+    dec = store_decision(store, target=args.target, width=args.width)
+    files = write_report(store, args.report, incident=dec.incident, target=args.target, width=args.width) \
+        if args.report else []
+    done_before = resumed[0] if resumed else 0
+    if args.json:
+        from boatland.cli.common import print_json
+
+        print_json({"store": str(store), "campaign": campaign.name, "trials": len(table),
+                    "run_now": len(table) - done_before, "resumed_from": done_before, "failed": n_failed,
+                    "failures": {str(c): [{"trial": t, "reason": why} for t, why in rows] for c, rows in failed.items()},
+                    "decision": dec.as_dict(), "report_files": [str(f) for f in files]})
+    else:
+        print(dec.text())
+        print(f"wrote {store}: {len(table)} trials"
+              + (f" ({len(table) - done_before} run now, {done_before} from before)" if done_before else "")
+              + (f", {n_failed} failed (left out of every probability)" if n_failed else "")
+              + ("" if args.report else f"; 'boatland report {store} -o DIR' for tables and figures"))
+        if args.report:
+            print(f"wrote {len(files)} report files to {args.report}")
     if n_failed and not args.allow_failures:
         print(f"boatland: error: {n_failed} of {len(table)} trials failed (see above; --allow-failures to accept "
               "them)", file=sys.stderr)

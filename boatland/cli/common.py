@@ -12,7 +12,7 @@ from boatland.errors import BoatlandInputError
 
 __all__ = ["DEFAULT_VESSEL", "resolve_db", "scenario_argument", "screening_options", "freq_load", "freq_sea",
            "freq_check", "freq_setup", "scenario_inputs", "load_guarded", "with_overrides", "check_memory",
-           "available_memory", "compile_notice", "kernels_cached"]
+           "available_memory", "compile_notice", "kernels_cached", "print_json"]
 
 DEFAULT_VESSEL = "ctv24"
 
@@ -211,3 +211,27 @@ def compile_notice() -> None:
     """One line on stderr when the kernels have to be compiled before the first trial."""
     if not kernels_cached():
         print("compiling kernels (first run only, about half a minute) …", file=sys.stderr, flush=True)
+
+
+def _json_safe(obj):
+    """NaN and ±inf → None (JSON has no such numbers), numpy scalars → Python, recursively."""
+    import math
+
+    if isinstance(obj, dict):
+        return {str(k): _json_safe(v) for k, v in obj.items()}
+    if isinstance(obj, (list, tuple)):
+        return [_json_safe(v) for v in obj]
+    if hasattr(obj, "item") and callable(obj.item) and getattr(obj, "ndim", 1) == 0:
+        obj = obj.item()
+    if isinstance(obj, float) and not math.isfinite(obj):
+        return None
+    if isinstance(obj, Path):
+        return str(obj)
+    return obj
+
+
+def print_json(obj) -> None:
+    """Print ``obj`` as indented, strict JSON (non-finite numbers as null; text kept as UTF-8)."""
+    import json
+
+    print(json.dumps(_json_safe(obj), indent=2, ensure_ascii=False, allow_nan=False, default=str))
