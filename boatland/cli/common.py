@@ -129,14 +129,14 @@ def scenario_argument(cmd, optional: bool = True) -> None:
 def screening_options(cmd) -> None:
     """The options ``screen`` and ``operability`` share."""
     cmd.add_argument("--accept", default="best", metavar="P",
-                     help="accepted probability of an incident per access, in (0, 1), or a preset of seed 002 "
-                          "Table 2.1: best (0.00119), conservative (0.00002), non-conservative (0.02681); "
+                     help="accepted probability of an incident per access, in (0, 1), or a preset of Grøtting "
+                          "(2015) Table 2.1: best (0.00119), conservative (0.00002), non-conservative (0.02681); "
                           "default best")
     cmd.add_argument("--statistics", choices=("rayleigh", "rice", "vanmarcke"), default="rayleigh",
-                     help="Rayleigh peaks, one per Tp (seed 002), or Rice up-crossing rates (optionally with "
+                     help="Rayleigh peaks, one per Tp (Grøtting 2015), or Rice up-crossing rates (optionally with "
                           "Vanmarcke's clumping correction); default rayleigh")
     cmd.add_argument("--method", choices=("improved", "wu"), default="improved",
-                     help="hinge model: improved = thrust follows the vessel, fender spring normal (seed 002 "
+                     help="hinge model: improved = thrust follows the vessel, fender spring normal (Grøtting 2015 "
                           "§3.4); wu = rigid hinge, thrust only a static normal force (§3.2.1); default improved")
     cmd.add_argument("--mu", type=in_range(0.0, 5.0), help="friction coefficient μ (default fender.mu_s)")
     cmd.add_argument("--thrust", type=positive("N"), help="bollard push F_b [N] (default thrust.force)")

@@ -179,7 +179,7 @@ class Result(TrialSeries):
         """Did the fender hold? :class:`~boatland.trial.verdict.Verdict` against the incident thresholds."""
         from boatland.trial.verdict import verdict
 
-        return verdict(self)
+        return verdict(self, self.summary())
 
     def summary(self) -> dict:
         """Figures a user reads first (JSON-able, full precision; :meth:`report` rounds them).
@@ -194,7 +194,7 @@ class Result(TrialSeries):
         if not landed.any():
             landed = touching
         fn = np.where(landed, self.fn[len(self.t) - len(landed):], np.nan)
-        return {
+        s = {
             "status": self.message,
             "duration": float(self.t[-1]),
             "slip_events": len(self.slip_starts()),
@@ -211,6 +211,10 @@ class Result(TrialSeries):
             "incidents": self.incident_times(),
             "provenance": self.provenance,
         }
+        from boatland.trial.verdict import verdict
+
+        s["verdict"] = verdict(self, s).as_dict()
+        return s
 
     def report(self, events: str = "waves") -> dict:
         """What ``boatland run --json`` prints: the verdict, the inputs, :meth:`summary` rounded to
@@ -221,8 +225,9 @@ class Result(TrialSeries):
         s = self.summary()
         units = {"duration": "s", "time_to_first_slip": "s", "max_slip_distance": "m", "max_single_slide": "m",
                  "max_normal_force": "N", "min_normal_force_in_contact": "N", "contact_fraction": "1"}
-        out = {"verdict": self.verdict().as_dict(), "inputs": self.inputs}
-        out.update({k: rounded(v, units[k]) if k in units else v for k, v in s.items() if k != "provenance"})
+        out = {"verdict": s["verdict"], "inputs": self.inputs}
+        out.update({k: rounded(v, units[k]) if k in units else v for k, v in s.items()
+                    if k not in ("provenance", "verdict")})
         out["max_motions"] = {k: rounded(v, "m" if k.endswith("[m]") else "deg") for k, v in s["max_motions"].items()}
         out["incidents"] = {k: rounded(v, "s") for k, v in s["incidents"].items()}
         out["settled_at"] = self.settled_at
@@ -246,7 +251,7 @@ class Result(TrialSeries):
         from boatland.trial.verdict import fmt_angle, fmt_force, fmt_length
 
         s = self.summary()
-        lines = [self.verdict().text()]
+        lines = [s["verdict"]["text"]]
         lines.append(f"  {s['status']} after {s['duration']:.1f} s"
                      + (f"; settled at t = {self.settled_at:g} s (thrust on; slides before it are not slips), waves "
                         f"at full height from t = {self.exposure_from:g} s" if self.mode.shape[1] and self.settled_at > 0

@@ -200,17 +200,18 @@ class Verdict:
                 "headline": self.headline}
 
 
-def verdict(result) -> Verdict:
-    """The verdict of a :class:`~boatland.trial.result.Result` against its incident thresholds."""
+def verdict(result, summary: dict | None = None) -> Verdict:
+    """The verdict of a :class:`~boatland.trial.result.Result` against its incident thresholds
+    (``summary``: its :meth:`~boatland.trial.result.Result.summary` when the caller has it)."""
     inputs = dict(result.provenance.get("inputs", {}))
-    inc = result.incident_times()
+    s = summary if summary is not None else result.summary()
+    inc = s["incidents"]
     after = result.settled_at - 1e-9
     if result.status not in OUTCOME_STATUSES:
         return Verdict("failed", f"FAILED: the integration stopped at {fmt_time(float(result.t[-1]))} "
                                  f"({result.message})", inputs, float(result.t[-1]), inc)
     slip_names = sorted((k for k in inc if k.startswith("slip >")), key=lambda k: float(k[6:].split()[0]))
     roll_names = sorted((k for k in inc if k.startswith("roll >")), key=lambda k: float(k[6:].rstrip("°")))
-    s = result.summary()
     slid = s["max_slip_distance"]
     exposure = float(result.t[-1]) - result.settled_at
     others = []
