@@ -57,6 +57,7 @@ def add_parser(sub) -> None:
     bld.set_defaults(func=cmd_build)
 
     lst = hsub.add_parser("list", help="list the built-in vessel databases")
+    lst.add_argument("--json", action="store_true", help="print the list as JSON (name, description, file)")
     lst.set_defaults(func=cmd_list)
 
 
@@ -100,6 +101,12 @@ def cmd_build(args) -> int:
 def cmd_list(args) -> int:
     from boatland.hydro.builtin import BUILTIN, builtin_path
 
+    if args.json:
+        from boatland.cli.common import print_json
+
+        print_json([{"name": name, "description": text, "file": str(builtin_path(name))}
+                    for name, text in BUILTIN.items()])
+        return 0
     for name, text in BUILTIN.items():
         print(f"{name:8s} {text}  [{builtin_path(name)}]")
     return 0

@@ -49,7 +49,7 @@ def _sea(scenario) -> dict:
                 "relative_direction_deg": rel(w.direction_deg)}
     parts = w.parts
     names = {"jonswap": "JONSWAP", "pm": "Pierson–Moskowitz", "tma": "TMA"}
-    text = " + ".join(f"{names.get(p.kind, p.kind)} Hs {p.Hs:g} m, Tp {p.Tp:g} s" for p in parts)
+    text = " + ".join(f"{names.get(p.kind, p.kind)} Hs {p.Hs:.3g} m, Tp {p.Tp:.3g} s" for p in parts)
     out = {"sea": text, "Hs": parts[0].Hs if len(parts) == 1 else math.sqrt(sum(p.Hs ** 2 for p in parts)),
            "Tp": parts[0].Tp, "relative_direction_deg": rel(parts[0].direction_deg)}
     if parts[0].gamma is not None:
