@@ -13,6 +13,7 @@ Every change is validated as the file is (all problems at once, with their key p
 
 from __future__ import annotations
 
+import warnings
 from pathlib import Path
 from typing import Any, Mapping
 
@@ -119,7 +120,9 @@ def simulate(scenario=None, *, changes: Mapping[str, Any] | None = None, log: st
 
         sinks.append(McapLog(Path(log)))
     try:
-        return run(sc, db, sinks=sinks, progress=progress)
+        with warnings.catch_warnings():   # numba compiling the sinks' gate (object mode by design): not for users
+            warnings.filterwarnings("ignore", message="Code running in object mode won't allow parallel execution")
+            return run(sc, db, sinks=sinks, progress=progress)
     finally:
         for s in sinks:
             s.close()

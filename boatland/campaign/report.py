@@ -335,6 +335,9 @@ def figure_time_to_incident(data: dict, dec: Decision):
     ax.grid(alpha=0.3)
     if 0 < drawn <= 12:
         ax.legend(fontsize=7)
+    if not drawn:
+        ax.text(0.5, 0.5, f"no trial had the incident {dec.incident}", transform=ax.transAxes, ha="center",
+                va="center", fontsize=9, color="0.3")
     return fig
 
 
