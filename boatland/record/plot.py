@@ -5,10 +5,12 @@ Panels sharing the time axis (:data:`PANELS`):
 1. the wave elevation at the bow (with the pile's scattered wave when the trial has it) and heave [m];
 2. roll and pitch [deg];
 3. friction utilisation per contact — the friction needed to hold the contact stuck over the friction
-   available (μ_s f_n stuck, μ(|u|) f_n sliding); at 1 the contact slips (the line at 1);
+   available (μ_s f_n stuck, μ(|u|) f_n sliding); at 1 the contact slips (the line at 1); in runs
+   longer than 3 minutes drawn as its largest value per peak period (the rest faint);
 4. normal force per contact [kN];
 5. slip distance of each fender point from where it landed, with the incident thresholds.
 
+Contacts that do exactly the same (a symmetric landing in head seas) are one line, "contacts 0+1".
 The settling (the thrust ramping in) is shaded; slip starts (contacts slipping at the same step once)
 are ticks along the top of the utilisation panel, thinned to one per 0.5 % of the time axis when
 there are many; incidents are labelled dashed lines. The title names the inputs (sea, direction, push,
@@ -64,6 +66,15 @@ def _title(log: RunLog, prov: dict) -> str:
     return f"{line1}\n{line2}"
 
 
+def _wave_period(prov: dict) -> float:
+    """The sea's peak period [s] (window of the utilisation envelope); 10 s when unknown."""
+    inputs = prov.get("inputs", {})
+    for key in ("Tp", "T"):
+        if inputs.get(key):
+            return float(inputs[key])
+    return 10.0
+
+
 def _thin(times: np.ndarray, span: float, fraction: float = 0.005) -> np.ndarray:
     """Times at least ``fraction`` of ``span`` apart (the first of each cluster kept)."""
     out, last = [], -np.inf
@@ -72,6 +83,30 @@ def _thin(times: np.ndarray, span: float, fraction: float = 0.005) -> np.ndarray
             out.append(t)
             last = t
     return np.asarray(out)
+
+
+def _distinct(a: np.ndarray) -> list[tuple[str, np.ndarray]]:
+    """Columns of ``a`` (n, Nc) with their labels, identical ones once ("contacts 0+1": a symmetric
+    landing's tubes in head seas)."""
+    groups: list[tuple[list[int], np.ndarray]] = []
+    for k in range(a.shape[1]):
+        for members, col in groups:
+            if np.allclose(col, a[:, k], rtol=1e-9, atol=1e-12, equal_nan=True):
+                members.append(k)
+                break
+        else:
+            groups.append(([k], a[:, k]))
+    return [(("contact " if len(m) == 1 else "contacts ") + "+".join(map(str, m)), col) for m, col in groups]
+
+
+def _envelope(t: np.ndarray, y: np.ndarray, window: float) -> tuple[np.ndarray, np.ndarray]:
+    """Largest value of ``y`` in consecutive windows of ``window`` seconds (NaN ignored), as steps."""
+    if len(t) < 2 or window <= 0:
+        return t, y
+    edges = np.arange(t[0], t[-1] + window, window)
+    idx = np.searchsorted(t, edges)
+    tops = [np.nanmax(y[i:j]) if j > i and np.isfinite(y[i:j]).any() else np.nan for i, j in zip(idx[:-1], idx[1:])]
+    return edges[:-1], np.asarray(tops)
 
 
 def figure_of_run(log: RunLog):
@@ -97,19 +132,26 @@ def figure_of_run(log: RunLog):
     ax = axes[2]
     with np.errstate(divide="ignore", invalid="ignore"):
         util = np.where(c.available > 0, c.needed / np.where(c.available > 0, c.available, 1.0), np.nan)
-    for k in range(nc):
-        ax.plot(t, np.clip(util[:, k], 0, UTIL_MAX), lw=0.8 if k == 0 else 0.6, alpha=1.0 if k == 0 else 0.7,
-                ls="-" if k == 0 else "--", label=f"contact {k}")
+    long_run = len(t) > 1 and (t[-1] - t[0]) > 180.0
+    window = _wave_period(prov)
+    for j, (label, col) in enumerate(_distinct(util)):
+        y = np.clip(col, 0, UTIL_MAX)
+        if long_run:      # hundreds of waves: the largest utilisation per wave period, the rest faint
+            ax.plot(t, y, lw=0.4, alpha=0.25, color=f"C{j}")
+            te, ye = _envelope(t, y, window)
+            ax.step(te, ye, where="post", lw=1.0, color=f"C{j}", label=f"{label}: largest per {window:g} s")
+        else:
+            ax.plot(t, y, lw=0.8, color=f"C{j}", ls="-" if j == 0 else "--", label=label)
     ax.axhline(1.0, color="tab:red", lw=1.0, label="slips at 1")
     ax.set(title=PANELS[2] + " (friction needed to stick / available; clipped at "
                              f"{UTIL_MAX:g})", ylabel="needed / available [-]", ylim=(0, UTIL_MAX * 1.08))
     ax = axes[3]
-    for k in range(nc):
-        ax.plot(t, c.fn[:, k] / 1e3, lw=0.8 if k == 0 else 0.6, ls="-" if k == 0 else "--", label=f"contact {k}")
+    for j, (label, col) in enumerate(_distinct(c.fn)):
+        ax.plot(t, col / 1e3, lw=0.7, ls="-" if j == 0 else "--", label=label)
     ax.set(title=PANELS[3], ylabel="normal force [kN]")
     ax = axes[4]
-    for k in range(nc):
-        ax.plot(t, c.slip[:, k], lw=0.9 if k == 0 else 0.7, ls="-" if k == 0 else "--", label=f"contact {k}")
+    for j, (label, col) in enumerate(_distinct(c.slip)):
+        ax.plot(t, col, lw=0.9, ls="-" if j == 0 else "--", label=label)
     limits = []
     if log.summary is not None:
         limits = [float(k.split(">")[1].split("m")[0]) for k in log.summary.get("incidents", {}) if k.startswith("slip >")]
