@@ -83,3 +83,15 @@ def test_run_options_parse(argv):
 
     args = _parser().parse_args(["run", *argv])
     assert args.events in ("waves", "none")
+
+
+def test_compile_notice_only_when_the_kernels_are_not_cached(monkeypatch, capsys):
+    from boatland.cli import common
+
+    assert common.kernels_cached() in (True, False)
+    monkeypatch.setattr(common, "kernels_cached", lambda: False)
+    common.compile_notice()
+    assert capsys.readouterr().err.strip() == "compiling kernels (first run only, about half a minute) …"
+    monkeypatch.setattr(common, "kernels_cached", lambda: True)
+    common.compile_notice()
+    assert capsys.readouterr().err == ""
