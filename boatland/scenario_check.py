@@ -151,10 +151,20 @@ class CheckReport:
     warnings: tuple[str, ...]
     notes: tuple[str, ...]
     text: str
+    source: str = ""
+    scenario: str | None = None
+    summary: str = ""
+    inputs: dict | None = None
 
     @property
     def exit_status(self) -> int:
         return 0 if self.ok else BoatlandInputError.exit_status
+
+    def as_dict(self) -> dict:
+        """``boatland scenario check --json``: verdict, problems with their key paths, warnings, notes."""
+        return {"file": self.source, "ok": self.ok, "scenario": self.scenario, "summary": self.summary,
+                "inputs": self.inputs, "problems": [{"key": k, "message": m} for k, m in self.problems],
+                "warnings": list(self.warnings), "notes": list(self.notes)}
 
 
 def _summary(s: Scenario) -> str:
@@ -206,9 +216,11 @@ def check_file(path: str | Path) -> CheckReport:
             if check.ok and db.M is not None:
                 check = _with_memory_check(scenario, db, check)
         except SpecError as exc:
-            return CheckReport(ok=False, problems=tuple(exc.problems), warnings=(), notes=(), text=str(exc))
+            return CheckReport(ok=False, problems=tuple(exc.problems), warnings=(), notes=(), text=str(exc),
+                               source=source)
         except BoatlandInputError as exc:
-            return CheckReport(ok=False, problems=(("", str(exc)),), warnings=(), notes=(), text=str(exc))
+            return CheckReport(ok=False, problems=(("", str(exc)),), warnings=(), notes=(), text=str(exc),
+                               source=source)
     load_warnings = [str(w.message) for w in caught if issubclass(w.category, BoatlandWarning)]
     warns = tuple(load_warnings) + tuple(f"{source}: {k}: {m}" for k, m in check.warnings)
     if not check.ok:
@@ -216,5 +228,8 @@ def check_file(path: str | Path) -> CheckReport:
     else:
         text = f"{source}: OK: {scenario.name} ({_summary(scenario)})"
     lines = [text] + [f"  warning: {w}" for w in warns] + [f"  note: {n}" for n in check.notes]
+    from boatland.trial.inputs import trial_inputs
+
     return CheckReport(ok=check.ok, problems=check.problems, warnings=warns, notes=check.notes,
-                       text="\n".join(lines))
+                       text="\n".join(lines), source=source, scenario=scenario.name, summary=_summary(scenario),
+                       inputs=trial_inputs(scenario))

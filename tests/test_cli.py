@@ -108,8 +108,8 @@ def test_every_shipped_scenario_runs_shortened(scenario, tmp_path):
     assert s["status"] == "completed" and s["duration"] == pytest.approx(40.0, abs=0.1)
     import h5py
 
-    with h5py.File(out) as f:
-        assert f["x"].shape[1] == 6 and f["t"][-1] == pytest.approx(40.0, abs=0.1)
+    with h5py.File(out) as f:          # netCDF-4: named variables with dimension scales
+        assert f["motion"].shape[1] == 6 and f["time"][-1] == pytest.approx(40.0, abs=0.1)
         assert json.loads(f.attrs["summary"])["slip_events"] == s["slip_events"]
 
 

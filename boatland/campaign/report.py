@@ -1,12 +1,17 @@
-"""Reports of a campaign store: tables (CSV and Markdown) and figures.
+"""Reports of a campaign store: the decision table, tables (CSV and Markdown) and figures.
 
-- ``cases.csv`` / ``cases.md``: per case, every incident definition's count, P(incident within the
-  access) with its Clopper–Pearson 95 % interval and the mean time to the incident with its χ²
-  interval (:mod:`boatland.campaign.stats`);
+- ``decision.md`` / ``decision.csv``: what a planner reads — P(incident within the access) [95 %
+  interval] pivoted by Hs × Tp × heading, the screening beside each cell, the limiting Hs with its
+  interval and the seeds an interval of the asked width needs (:mod:`boatland.campaign.decision`);
 - ``limiting_hs.csv`` / ``.md``: when ``sea.Hs`` is an axis, the limiting Hs at the target
-  probability per combination of the other axes;
-- ``p_vs_hs.png``: P(incident) against Hs with intervals, one line per combination of the other axes;
-- ``limiting_hs_polar.png``: limiting Hs against the heading, one line per Tp (with a direction axis);
+  probability with its interval per combination of the other axes ("< lowest swept Hs" / "> highest"
+  where it does not cross inside the sweep);
+- ``cases.csv`` (every column, for programs) / ``cases.md`` (readable): per case and incident
+  definition the count, P with its Clopper–Pearson interval and the mean time to the incident with
+  its χ² interval (:mod:`boatland.campaign.stats`);
+- ``p_vs_hs.png``: P(incident) against Hs with intervals and the screening, one line per Tp × heading;
+- ``limiting_hs_polar.png``: limiting Hs against the heading (bow up, 180° head seas at the top:
+  :mod:`boatland.plotstyle`), one line per Tp, its interval shaded;
 - ``time_to_incident.png``: empirical distribution of the time to the first incident per case.
 
 A campaign by importance sampling (``method = "isee"``, :mod:`boatland.campaign.isee`) gets instead:
@@ -30,20 +35,20 @@ from pathlib import Path
 
 import numpy as np
 
+from boatland.campaign.decision import DEFAULT_WIDTH, Decision, decision
+from boatland.campaign.labels import DIR_KEYS, HS_KEY, axis_label, fixed_text, value_text
 from boatland.campaign.runner import completed
-from boatland.campaign.stats import limiting_hs
 from boatland.campaign.store import FORMAT, INCIDENT_PREFIX
 from boatland.errors import BoatlandInputError
 
-__all__ = ["read_store", "write_report", "REPORT_FILES"]
+__all__ = ["read_store", "write_report", "store_decision", "default_incident", "REPORT_FILES",
+           "figure_p_vs_hs", "figure_limiting_polar", "figure_time_to_incident"]
 
 #: Every file :func:`write_report` may write into its folder.
-REPORT_FILES = ("cases.csv", "cases.md", "limiting_hs.csv", "limiting_hs.md", "p_vs_hs.png",
-                "limiting_hs_polar.png", "time_to_incident.png", "isee_runs.csv", "isee_runs.md", "isee_limits.csv",
-                "isee_limits.md")
+REPORT_FILES = ("decision.md", "decision.csv", "cases.csv", "cases.md", "limiting_hs.csv", "limiting_hs.md",
+                "p_vs_hs.png", "limiting_hs_polar.png", "time_to_incident.png", "isee_runs.csv", "isee_runs.md",
+                "isee_limits.csv", "isee_limits.md")
 
-HS_KEY = "sea.Hs"
-DIR_KEYS = ("sea.relative_direction_deg", "sea.direction_deg")
 TP_KEYS = ("sea.Tp",)
 
 
@@ -82,35 +87,59 @@ def read_store(path: str | Path) -> dict:
     return out
 
 
+def default_incident(names: list[str]) -> str:
+    """The incident a report is about unless told: the first slip-distance definition, else the first."""
+    return next((n for n in names if n.startswith("slip >")), names[0])
+
+
+def _incident(data: dict, incident: str | None) -> str:
+    names = data["header"]["incidents"].split("\n")
+    if incident is None:
+        return default_incident(names)
+    if incident not in names:
+        raise BoatlandInputError(f"--incident {incident!r} is not one of the campaign's: {', '.join(names)}")
+    return incident
+
+
+def store_decision(store: str | Path, *, incident: str | None = None, target: float = 0.1,
+                   width: float = DEFAULT_WIDTH) -> Decision:
+    """The decision table of a finished campaign store (:func:`boatland.campaign.decision.decision`)."""
+    data = read_store(store)
+    return decision(data, _incident(data, incident), target, width=width)
+
+
 def write_report(store: str | Path, out_dir: str | Path, *, incident: str | None = None,
-                 target: float = 0.1, figures: bool = True) -> list[Path]:
-    """Write the tables and figures of a finished campaign into ``out_dir``; returns the files.
+                 target: float = 0.1, width: float = DEFAULT_WIDTH, figures: bool = True) -> list[Path]:
+    """Write the decision table, tables and figures of a finished campaign into ``out_dir``; returns
+    the files.
 
     Parameters
     ----------
     incident : str, optional
-        Incident definition of the limiting-Hs table and figures (default: the first slip distance
-        definition, else "first slip").
+        Incident definition of the decision table, limiting Hs and figures (default: the first slip
+        distance definition, else "first slip").
     target : float
         Accepted probability of the incident within the access, for the limiting Hs.
+    width : float
+        Width asked of the 95 % interval of P near the target, for the seeds advice.
     """
     data = read_store(store)
+    incident = _incident(data, incident)
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     if data["header"].get("method") == "isee":
         return _isee_report(data, out, incident, figures)
     stats, plan = data["stats"], data["plan"]
     names = data["header"]["incidents"].split("\n")
-    if incident is None:
-        incident = next((n for n in names if n.startswith("slip >")), names[0])
-    if incident not in names:
-        raise BoatlandInputError(f"incident {incident!r} is not one of the campaign's: {', '.join(names)}")
-    files = [*_cases_tables(stats, names, out)]
+    dec = decision(data, incident, target, width=width)
+    (out / "decision.md").write_text(dec.markdown(), encoding="utf-8")
+    files = [out / "decision.md", _decision_csv(dec, out / "decision.csv")]
     axes = list(plan["axes"])
+    files += _cases_tables(stats, names, axes, dec, out)
     if HS_KEY in axes:
-        files += _limiting_tables(stats, axes, incident, target, out)
+        files += _limiting_tables(dec, out)
     if figures:
-        files += _figures(data, axes, incident, target, out)
+        files += _figures(data, dec, out)
     return files
 
 
@@ -122,114 +151,238 @@ def _fmt(v) -> str:
     return str(v)
 
 
-def _write_tables(rows: list[list], header: list[str], out: Path, stem: str, title: str) -> list[Path]:
-    csv_path, md_path = out / f"{stem}.csv", out / f"{stem}.md"
-    with open(csv_path, "w", newline="", encoding="utf-8") as fh:
+def _write_csv(rows: list[list], header: list[str], path: Path) -> Path:
+    with open(path, "w", newline="", encoding="utf-8") as fh:
         w = csv.writer(fh)
         w.writerow(header)
         w.writerows([[_fmt(v) for v in r] for r in rows])
+    return path
+
+
+def _write_md(rows: list[list[str]], header: list[str], path: Path, title: str, notes: str = "") -> Path:
     lines = [f"# {title}", "", "| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-    lines += ["| " + " | ".join(_fmt(v) for v in r) + " |" for r in rows]
-    md_path.write_text("\n".join(lines) + "\n", encoding="utf-8")
-    return [csv_path, md_path]
+    lines += ["| " + " | ".join(r) + " |" for r in rows]
+    if notes:
+        lines += ["", notes]
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    return path
 
 
-def _cases_tables(stats, names, out):
+def _decision_csv(dec: Decision, path: Path) -> Path:
+    """One row per cell (long form, for spreadsheets)."""
+    keys = list(dec.sections[0].fixed) if dec.sections else []
+    methods = sorted({m for s in dec.sections for c in s.cells.values() for m in c.others})
+    header = [axis_label(k) for k in keys] + [axis_label(HS_KEY)] + [axis_label(k) for k in dec.column_keys]
+    header += ["trials", "incidents", "P", "P lo", "P hi", "screening P(slip)"]
+    for m in methods:
+        header += [f"{m}: P", f"{m}: P lo", f"{m}: P hi"]
+    rows = []
+    for s in dec.sections:
+        for (r, c), cell in sorted(s.cells.items()):
+            row = [*s.fixed.values(), r, *c, cell.n, cell.k, cell.p, cell.lo, cell.hi, cell.screening]
+            for m in methods:
+                row += list(cell.others.get(m, (math.nan,) * 3))
+            rows.append(row)
+    return _write_csv(rows, header, path)
+
+
+def _mean_text(m, lo, hi) -> str:
+    if not math.isfinite(lo):
+        return "–"
+    if math.isinf(m):
+        return f"none (mean ≥ {lo:.0f} s)"
+    return f"{m:.0f} s [{lo:.0f}, {hi:.0f}]" if math.isfinite(hi) else f"{m:.0f} s [{lo:.0f}, –]"
+
+
+def _cases_tables(stats, names, axes, dec: Decision, out):
+    """``cases.csv`` with every column (raw names, for programs) and a readable ``cases.md``."""
     header = ["case", "label", "trials", "failed", "screening: P(slip) (frequency domain)", "screening: note"]
+    header += [axis_label(a) for a in axes]
     for n in names:
         header += [f"{n}: count", f"{n}: P", f"{n}: P lo", f"{n}: P hi", f"{n}: mean time [s]",
                    f"{n}: mean lo", f"{n}: mean hi"]
-    cols = ["case", "label", "trials", "failed", "screening: P(slip)", "screening: note"] + [f"{n}: {k}" for n in names
-                                                   for k in ("count", "P", "P lo", "P hi", "mean time", "mean lo", "mean hi")]
-    rows = [[r[c] for c in cols] for r in stats]
-    return _write_tables(rows, header, out, "cases", "Per case: incident probability (Clopper–Pearson 95 %) "
-                                                      "and mean time to the incident (χ² 95 %)")
-
-
-def _groups(stats, axes):
-    """Combinations of the axes other than Hs → indices of their cases, in plan order."""
-    others = [a for a in axes if a != HS_KEY]
-    groups: dict[tuple, list[int]] = {}
-    for i, r in enumerate(stats):
-        groups.setdefault(tuple(float(r[f"axis: {a}"]) for a in others), []).append(i)
-    return others, groups
-
-
-def _limiting_tables(stats, axes, incident, target, out):
-    others, groups = _groups(stats, axes)
+    cols = ["case", "label", "trials", "failed", "screening: P(slip)", "screening: note"] + [f"axis: {a}" for a in axes]
+    cols += [f"{n}: {k}" for n in names for k in ("count", "P", "P lo", "P hi", "mean time", "mean lo", "mean hi")]
+    files = [_write_csv([[r[c] for c in cols] for r in stats], header, out / "cases.csv")]
+    md_head = ["case", *[axis_label(a) for a in axes], "trials"] + [f"P({n})" for n in names] \
+        + [f"mean time to {dec.incident}", "screening P(slip)"]
     rows = []
-    for key, idx in groups.items():
-        hs = stats[f"axis: {HS_KEY}"][idx]
-        p = stats[f"{incident}: P"][idx]
-        rows.append([*key, limiting_hs(hs, p, target)])
-    return _write_tables(rows, [*others, f"limiting Hs [m] at P({incident}) = {target:g}"], out, "limiting_hs",
-                         f"Limiting Hs: P({incident} within the access) = {target:g}, linear interpolation along Hs")
+    for r in stats:
+        ok = int(r["trials"]) - int(r["failed"])
+        row = [str(int(r["case"])), *[value_text(a, float(r[f"axis: {a}"]), short=True) for a in axes],
+               f"{ok}" + (f" (+{int(r['failed'])} failed)" if r["failed"] else "")]
+        row += [f"{int(r[f'{n}: count'])}/{ok} = {r[f'{n}: P']:.2f} [{r[f'{n}: P lo']:.2f}, {r[f'{n}: P hi']:.2f}]"
+                if ok else "–" for n in names]
+        i = dec.incident
+        row.append(_mean_text(float(r[f"{i}: mean time"]), float(r[f"{i}: mean lo"]), float(r[f"{i}: mean hi"])))
+        fd = float(r["screening: P(slip)"])
+        row.append(f"{fd:.2f}" if math.isfinite(fd) else (_fmt(r["screening: note"]) or "–"))
+        rows.append(row)
+    files.append(_write_md(rows, md_head, out / "cases.md",
+                           f"{dec.campaign}: every case — P(incident within the access) [Clopper–Pearson 95 %], "
+                           f"mean time to {dec.incident} [χ² 95 %]",
+                           fixed_text(dec.inputs, axes)))
+    return files
 
 
-def _figures(data, axes, incident, target, out):
-    import matplotlib
+def _limiting_tables(dec: Decision, out):
+    keys = list(dec.sections[0].fixed) if dec.sections else []
+    header = [axis_label(k) for k in keys] + [axis_label(k) for k in dec.column_keys]
+    header_csv = header + ["limiting Hs [m]", "lower [m]", "upper [m]", "estimate is", "lower is", "upper is"]
+    rows_csv, rows_md = [], []
+    for s in dec.sections:
+        for c, lim in s.limits.items():
+            rows_csv.append([*s.fixed.values(), *c, lim.estimate.value, lim.lower.value, lim.upper.value,
+                             lim.estimate.where, lim.lower.where, lim.upper.where])
+            rows_md.append([*(value_text(k, v, short=True) for k, v in s.fixed.items()),
+                            *(value_text(k, v, short=True) for k, v in zip(dec.column_keys, c)), lim.text()])
+    files = [_write_csv(rows_csv, header_csv, out / "limiting_hs.csv")]
+    files.append(_write_md(rows_md, header + [f"limiting Hs [m] at P({dec.incident}) = {dec.target:g}"],
+                           out / "limiting_hs.md",
+                           f"{dec.campaign}: limiting Hs — P({dec.incident} within the access) = {dec.target:g}",
+                           "Linear between the swept Hs; the interval is where the Clopper–Pearson 95 % bounds of P "
+                           "reach the target; \"< x\": P is at or above the target already at the lowest swept Hs x; "
+                           "\"> x\": it never reaches it up to the highest x. " + dec.advice() + "."))
+    return files
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
 
+# ------------------------------------------------------------------------------------------------ figures
+def _title(dec: Decision, what: str) -> str:
+    fixed = fixed_text(dec.inputs, dec.axes)
+    return f"{dec.campaign}: {what}" + (f"\n{fixed}" if fixed else "")
+
+
+def figure_p_vs_hs(dec: Decision):
+    """P(incident within the access) against Hs with Clopper–Pearson intervals (and the screening's P,
+    dashed), one line per section × Tp × heading; returns the Figure."""
+    from boatland.plotstyle import pyplot
+
+    plt = pyplot()
+    fig, ax = plt.subplots(figsize=(7.5, 5.4), layout="constrained")
+    k = 0
+    for s in dec.sections:
+        for c in s.columns:
+            got = [(r, s.cells[(r, c)]) for r in s.rows if (r, c) in s.cells and s.cells[(r, c)].n > 0]
+            if not got:
+                continue
+            hs = np.array([r for r, _ in got])
+            p = np.array([x.p for _, x in got])
+            lo = np.array([x.lo for _, x in got])
+            hi = np.array([x.hi for _, x in got])
+            fd = np.array([x.screening for _, x in got])
+            label = ", ".join(t for t in (s.title() if len(dec.sections) > 1 else "", s.column_text(c)) if t)
+            color = f"C{k % 10}"
+            ax.errorbar(hs + 0.004 * k, p, yerr=[p - lo, hi - p], marker="o", capsize=3, color=color,
+                        label=f"{label}: Monte Carlo" if label else "Monte Carlo")
+            if np.isfinite(fd).any():
+                ax.plot(hs, fd, ls="--", marker="x", color=color, lw=1,
+                        label=f"{label}: screening" if label else "screening (frequency domain)")
+            k += 1
+    ax.axhline(dec.target, color="0.4", ls=":", lw=1, label=f"target P = {dec.target:g}")
+    ax.set(xlabel="Hs [m]", ylabel=f"P({dec.incident} within the access) [-]", ylim=(-0.02, 1.02),
+           title=_title(dec, f"P({dec.incident}) with {100 * dec.confidence:g} % intervals"))
+    ax.title.set_fontsize(9)
+    ax.grid(alpha=0.3)
+    fig.legend(fontsize=7, loc="outside lower center", ncol=2)
+    return fig
+
+
+def figure_limiting_polar(dec: Decision):
+    """Limiting Hs [m] against the heading (bow up, :mod:`boatland.plotstyle`), one line per Tp (and
+    section), its interval shaded; "<"/">" ends of the sweep drawn as open triangles; returns the Figure."""
+    from boatland.plotstyle import POLAR_NOTE, heading_polar, pyplot
+
+    plt = pyplot()
+    dkey = next((k for k in DIR_KEYS if k in dec.axes), None)
+    fig = plt.figure(figsize=(6.2, 6.4), constrained_layout=True)
+    ax = fig.add_subplot(projection="polar")
+    k = 0
+    for s in dec.sections:
+        groups: dict[tuple, list] = {}
+        for c in s.columns:
+            if c not in s.limits:
+                continue
+            rest = tuple(v for key, v in zip(s.column_keys, c) if key != dkey)
+            d = dict(zip(s.column_keys, c)).get(dkey)
+            groups.setdefault(rest, []).append((d, s.limits[c]))
+        for rest, pts in groups.items():
+            pts.sort(key=lambda x: x[0])
+            th = np.radians([d for d, _ in pts])
+            est = np.array([lim.estimate.value for _, lim in pts])
+            lo = np.array([lim.lower.value for _, lim in pts])
+            hi = np.array([lim.upper.value for _, lim in pts])
+            color = f"C{k % 10}"
+            keys = [key for key in s.column_keys if key != dkey]
+            label = ", ".join([*(value_text(kk, v) for kk, v in zip(keys, rest)),
+                               *((s.title(),) if len(dec.sections) > 1 else ())]) or "limiting Hs"
+            ax.plot(th, est, marker="o", color=color, label=label)
+            if len(th) > 1:
+                ax.fill_between(th, lo, hi, color=color, alpha=0.15, lw=0)
+            for t, (_, lim) in zip(th, pts):
+                if lim.estimate.where != "inside":
+                    ax.plot([t], [lim.estimate.value], marker="v" if lim.estimate.where == "below" else "^",
+                            ms=9, mfc="white", color=color)
+            k += 1
+    heading_polar(ax, rlabel="limiting Hs [m]")
+    ax.set_title(_title(dec, f"limiting Hs [m] at P({dec.incident}) = {dec.target:g}") + f"\n{POLAR_NOTE}\n"
+                 f"band: {100 * dec.confidence:g} % interval; ▽ / △: below / above the swept Hs", fontsize=8)
+    if k:
+        ax.legend(fontsize=7, loc="lower left", bbox_to_anchor=(-0.12, -0.12))
+    return fig
+
+
+def figure_time_to_incident(data: dict, dec: Decision):
+    """Empirical distribution of the time to the first incident per case; returns the Figure."""
+    from boatland.plotstyle import pyplot
+
+    plt = pyplot()
     stats, trials = data["stats"], data["trials"]
-    files = []
-    if HS_KEY in axes:
-        others, groups = _groups(stats, axes)
-        fig, ax = plt.subplots(figsize=(7, 4.5))
-        for key, idx in groups.items():
-            hs = stats[f"axis: {HS_KEY}"][idx]
-            p, lo, hi = (stats[f"{incident}: {k}"][idx] for k in ("P", "P lo", "P hi"))
-            label = ", ".join(f"{a.split('.')[-1]} {v:g}" for a, v in zip(others, key)) or "all"
-            ax.errorbar(hs, p, yerr=[p - lo, hi - p], marker="o", capsize=3, label=label)
-        ax.axhline(target, color="0.5", ls="--", lw=1, label=f"target {target:g}")
-        ax.set(xlabel="Hs [m]", ylabel=f"P({incident} within the access)", ylim=(-0.02, 1.02),
-               title=f"{data['header']['campaign']}: incident probability (Clopper–Pearson 95 %)")
-        ax.grid(alpha=0.3)
-        ax.legend(fontsize=8)
-        files.append(_save(fig, out / "p_vs_hs.png"))
-        dkey = next((k for k in DIR_KEYS if k in axes), None)
-        if dkey is not None:
-            tkey = next((k for k in TP_KEYS if k in axes), None)
-            fig = plt.figure(figsize=(5.5, 5.5))
-            ax = fig.add_subplot(projection="polar")
-            tps = sorted({float(r[f"axis: {tkey}"]) for r in stats}) if tkey else [None]
-            for tp in tps:
-                dirs, lim = [], []
-                for d in sorted({float(r[f"axis: {dkey}"]) for r in stats}):
-                    sel = [i for i, r in enumerate(stats) if float(r[f"axis: {dkey}"]) == d
-                           and (tp is None or float(r[f"axis: {tkey}"]) == tp)]
-                    dirs.append(np.radians(d))
-                    lim.append(limiting_hs(stats[f"axis: {HS_KEY}"][sel], stats[f"{incident}: P"][sel], target))
-                ax.plot(dirs, lim, marker="o", label="all" if tp is None else f"Tp {tp:g} s")
-            ax.set_theta_zero_location("N")
-            ax.set_title(f"limiting Hs [m], P({incident}) = {target:g}\n(heading relative to the bow)", fontsize=9)
-            ax.legend(fontsize=8, loc="lower left")
-            files.append(_save(fig, out / "limiting_hs_polar.png"))
-    fig, ax = plt.subplots(figsize=(7, 4.5))
-    col = INCIDENT_PREFIX + incident
+    fig, ax = plt.subplots(figsize=(7.5, 4.8), constrained_layout=True)
+    col = INCIDENT_PREFIX + dec.incident
+    axes = dec.axes
+    drawn = 0
     for r in stats:
         t = trials[col][(trials["case"] == r["case"]) & completed(trials)]
         if not np.isfinite(t).any():
             continue
         ts = np.sort(t[np.isfinite(t)])
-        ax.step(np.r_[0, ts], np.arange(ts.size + 1) / t.size, where="post", label=_fmt(r["label"]))
-    ax.set(xlabel="time to the first incident after the waves start [s]", ylabel="fraction of trials",
-           title=f"time to {incident} (empirical; censored trials never reach the top)")
+        label = ", ".join(value_text(a, float(r[f"axis: {a}"])) for a in axes) or "all"
+        ax.step(np.r_[0, ts], np.arange(ts.size + 1) / t.size, where="post", label=label)
+        drawn += 1
+    ax.set(xlabel="time from the waves' full height to the first incident [s]", ylabel="fraction of trials [-]", ylim=(0, 1.02),
+           title=_title(dec, f"time to {dec.incident} (empirical; trials without one never reach the top)"))
+    ax.title.set_fontsize(9)
     ax.grid(alpha=0.3)
-    if len(stats) <= 12:
+    if 0 < drawn <= 12:
         ax.legend(fontsize=7)
-    files.append(_save(fig, out / "time_to_incident.png"))
+    if not drawn:
+        ax.text(0.5, 0.5, f"no trial had the incident {dec.incident}", transform=ax.transAxes, ha="center",
+                va="center", fontsize=9, color="0.3")
+    return fig
+
+
+def _figures(data, dec: Decision, out):
+    from boatland.plotstyle import save_figure
+
+    files = []
+    if HS_KEY in dec.axes:
+        files.append(save_figure(figure_p_vs_hs(dec), out / "p_vs_hs.png"))
+        if any(k in dec.axes for k in DIR_KEYS):
+            files.append(save_figure(figure_limiting_polar(dec), out / "limiting_hs_polar.png"))
+    files.append(save_figure(figure_time_to_incident(data, dec), out / "time_to_incident.png"))
     return files
 
 
 def _save(fig, path: Path) -> Path:
-    import matplotlib.pyplot as plt
+    from boatland.plotstyle import save_figure
 
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
+
+
+def _write_tables(rows: list[list], header: list[str], out: Path, stem: str, title: str) -> list[Path]:
+    return [_write_csv(rows, header, out / f"{stem}.csv"),
+            _write_md([[_fmt(v) for v in r] for r in rows], header, out / f"{stem}.md", title)]
 
 
 # ---------------------------------------------------------------------------------------- isee
@@ -270,10 +423,9 @@ def _isee_report(data, out: Path, incident: str | None, figures: bool) -> list[P
 
 
 def _isee_figures(runs, lim, plan, inc, out):
-    import matplotlib
+    from boatland.plotstyle import heading_polar, pyplot
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
 
     files = []
     fig, ax = plt.subplots(figsize=(7, 4.5))
@@ -306,7 +458,7 @@ def _isee_figures(runs, lim, plan, inc, out):
                                                        np.maximum(sel["limiting Hs hi"] - sel["limiting Hs"], 0)],
                         marker="o", color=colour, capsize=2, label=f"{label}: time domain (ISEE)")
             ax.plot(th, sel["screening rayleigh Hs"], ls="--", color=colour, lw=1, label=f"{label}: screening")
-        ax.set_theta_zero_location("N")
+        heading_polar(ax)
         acc = float(lim["accept"][0])
         ax.set_title(f"limiting Hs [m] at P({inc}) = {acc:g} per access\n(heading relative to the bow)", fontsize=9)
         ax.legend(fontsize=6, loc="lower left", bbox_to_anchor=(-0.1, -0.15), ncol=2)

@@ -34,6 +34,7 @@ error (e.g. the disk is full) cancels the trials still queued.
 
 from __future__ import annotations
 
+import json
 import math
 import os
 import signal
@@ -48,6 +49,7 @@ from pathlib import Path
 import numpy as np
 
 from boatland import __version__
+from boatland.campaign.labels import campaign_inputs
 from boatland.campaign.plan import Campaign, TrialSpec, load_campaign, trial_seed
 from boatland.campaign.stats import clopper_pearson, exponential_mean_interval
 from boatland.campaign.store import INCIDENT_PREFIX, CampaignStore
@@ -353,6 +355,7 @@ def run_campaign(campaign: Campaign, store_path: str | Path, *, loaders, executo
         "campaign": campaign.name, "campaign_digest": campaign.digest(),
         "campaign_file": Path(campaign.source).read_text(encoding="utf-8"),
         "plan": _plan_json(campaign), "n_trials": campaign.n_trials, "incidents": "\n".join(names),
+        "inputs": json.dumps(campaign_inputs(campaign), default=float),   # for the report's titles
     }
     if executor == "dask":
         _check_scheduler_address(scheduler)

@@ -11,7 +11,8 @@ Layout of ``results.h5``:
 - a campaign by importance sampling (``method = "isee"``, :mod:`boatland.campaign.isee`) has one row per
   sample in ``/trials`` with its extra columns (:data:`boatland.campaign.isee.ISEE_FIELDS`), its
   estimates per run in ``/isee_runs`` and its limiting Hs per case in ``/isee_limits``;
-- ``/series/trial_<n>``: full time series of the trials the campaign keeps.
+- ``/series/trial_<n>``: full time series of the trials the campaign keeps (netCDF-4 groups:
+  ``xarray.open_dataset(store, group="series/trial_000003")``, as ``boatland run -o`` writes them).
 
 Crash safety. Every finished trial is first appended as one JSON line to ``results.h5.journal`` and
 synced to disk; the HDF5 file is rewritten from scratch into a temporary file and renamed over the
@@ -64,7 +65,7 @@ ROW_FIELDS = (
     ("max_slip_distance", "f8", "[m] largest distance of a fender point from where it landed"),
     ("max_single_slide", "f8", "[m] largest single slide"),
     ("max_normal_force", "f8", "[N]"),
-    ("min_normal_force", "f8", "[N] smallest normal force while in contact"),
+    ("min_normal_force", "f8", "[N] smallest normal force while in contact after the settling"),
     ("max_roll_deg", "f8", "[deg]"),
     ("max_pitch_deg", "f8", "[deg]"),
     ("contact_fraction", "f8", "share of steps with every contact touching"),
@@ -278,8 +279,10 @@ class CampaignStore:
     def _write(self, table, stats, series, datasets) -> None:
         import h5py
 
+        from boatland.netcdf_h5 import copy_group
+
         with atomic_path(self.path) as tmp:
-            with h5py.File(tmp, "w") as f:
+            with h5py.File(tmp, "w", track_order=True) as f:
                 f.attrs["format"] = FORMAT
                 f.attrs["boatland_version"] = __version__
                 for k, v in self.header.items():
@@ -290,9 +293,9 @@ class CampaignStore:
                     f.create_dataset("stats", data=stats)
                 for name, data in datasets.items():
                     f.create_dataset(name, data=data)
-                for src in series:
+                for src in series:     # netCDF-4 groups: xarray.open_dataset(store, group="series/trial_…")
                     with h5py.File(src, "r") as s:
-                        s.copy(s["/"], f, name=f"series/{src.stem}")
+                        copy_group(s, f.require_group("series").create_group(src.stem, track_order=True))
         with open(self.journal, "w", encoding="utf-8") as fh:   # everything is in the HDF5 file now
             fh.flush()
             os.fsync(fh.fileno())

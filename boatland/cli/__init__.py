@@ -24,7 +24,7 @@ COMMANDS = ("run", "replay", "plot", "campaign", "report", "scenario", "hydro", 
 def main(argv: list[str] | None = None) -> int:
     """Run the command line; returns the exit status.
 
-    0 done; 2 a user mistake or an environment failure (unwritable path, disk full, out of memory:
+    0 done; 2 a user mistake (no command included) or an environment failure (unwritable path, disk full, out of memory:
     one line, no traceback); 3 a trial blew up; 1 some campaign trials failed; 130 interrupted;
     141 the reader of the output went away (e.g. ``| head``), quietly.
     """
@@ -35,9 +35,14 @@ def main(argv: list[str] | None = None) -> int:
         return exc.code if isinstance(exc.code, int) else 2
     logging.basicConfig(level=logging.INFO if args.verbose else logging.WARNING,
                         format="%(levelname)s: %(message)s")
+    import warnings
+
+    # numba says this while compiling the kernel's gate (a sleep in object mode, by design): not for users
+    warnings.filterwarnings("ignore", message="Code running in object mode won't allow parallel execution")
     if not hasattr(args, "func"):
-        parser.print_help()
-        return 0
+        parser.print_usage(sys.stderr)
+        _error("no command given; start with 'boatland run', or see 'boatland --help'")
+        return 2
     try:
         return int(args.func(args) or 0)
     except BoatlandInputError as exc:

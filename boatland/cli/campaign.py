@@ -6,7 +6,7 @@ import os
 import sys
 from pathlib import Path
 
-from boatland.cli.guard import Output, check_outputs, integer
+from boatland.cli.guard import Output, check_outputs, in_range, integer
 
 __all__ = ["add_parser", "cmd"]
 
@@ -32,6 +32,14 @@ def add_parser(sub) -> None:
     camp.add_argument("--save-worst", type=integer(0, 1000), default=0, metavar="N",
                       help="isee: run the N heaviest samples again with their run logs (MCAP, 'boatland replay' for "
                            "Rerun) into <store>.worst/")
+    camp.add_argument("--target", type=in_range(0.0, 1.0, hi_open=True), default=0.1,
+                      help="accepted probability of the incident within the access, for the limiting Hs of the "
+                           "summary and --report (default 0.1)")
+    camp.add_argument("--width", type=in_range(0.0, 1.0, hi_open=True), default=0.2,
+                      help="width asked of the 95 %% interval of P: the summary says how many seeds that needs "
+                           "(default 0.2)")
+    camp.add_argument("--json", action="store_true",
+                      help="print the outcome (trials, failures, the decision table) as JSON instead of text")
     camp.set_defaults(func=cmd)
 
 
@@ -80,16 +88,25 @@ def cmd(args) -> int:
         return _isee(args, campaign, store, where, worst_dir)
     from contextlib import ExitStack
 
+    from boatland.cli.common import compile_notice
+
     from tqdm import tqdm
 
     with ExitStack() as stack:
         bar = []
 
+        resumed = []
+
         def progress(done, total):
             if not bar:        # the first call: the store is open (not another campaign's): say what runs
                 print(f"campaign {campaign.name}: {len(campaign.cases)} cases × {campaign.seeds} seeds = "
-                      f"{campaign.n_trials} trials of {campaign.base.simulation.duration:g} s on {where} → {store}"
-                      + (f" ({done} already done)" if done else ""), file=sys.stderr)
+                      f"{campaign.n_trials} trials of {longest.simulation.duration:g} s on {where} → {store}",
+                      file=sys.stderr)
+                resumed.append(done)
+                if done:
+                    print(f"resuming: {done} of {total} trials already in the store", file=sys.stderr)
+                if done < total:
+                    compile_notice()
                 bar.append(stack.enter_context(tqdm(total=total, unit="trial", file=sys.stderr, disable=None,
                                                     dynamic_ncols=True)))
             bar[0].n = done
@@ -101,16 +118,32 @@ def cmd(args) -> int:
     table = result.table()
     failed = failures(campaign, table)
     n_failed = sum(len(v) for v in failed.values())
-    print(f"wrote {store}: {len(table)} trials" + (f", {n_failed} failed (left out of every probability)"
-                                                   if n_failed else ""))
     for case, rows in sorted(failed.items()):
         label = campaign.cases[case].label() or "base"
         print(f"  case {case} ({label}): {len(rows)} of {campaign.seeds} trials failed: "
               + "; ".join(f"trial {t}: {why}" for t, why in rows[:3]) + (" …" if len(rows) > 3 else ""),
               file=sys.stderr)
-    if args.report:
-        files = write_report(store, args.report)
-        print(f"wrote {len(files)} report files to {args.report}")
+    from boatland.campaign.report import store_decision
+
+    dec = store_decision(store, target=args.target, width=args.width)
+    files = write_report(store, args.report, incident=dec.incident, target=args.target, width=args.width) \
+        if args.report else []
+    done_before = resumed[0] if resumed else 0
+    if args.json:
+        from boatland.cli.common import print_json
+
+        print_json({"store": str(store), "campaign": campaign.name, "trials": len(table),
+                    "run_now": len(table) - done_before, "resumed_from": done_before, "failed": n_failed,
+                    "failures": {str(c): [{"trial": t, "reason": why} for t, why in rows] for c, rows in failed.items()},
+                    "decision": dec.as_dict(), "report_files": [str(f) for f in files]})
+    else:
+        print(dec.text())
+        print(f"wrote {store}: {len(table)} trials"
+              + (f" ({len(table) - done_before} run now, {done_before} from before)" if done_before else "")
+              + (f", {n_failed} failed (left out of every probability)" if n_failed else "")
+              + ("" if args.report else f"; 'boatland report {store} -o DIR' for tables and figures"))
+        if args.report:
+            print(f"wrote {len(files)} report files to {args.report}")
     if n_failed and not args.allow_failures:
         print(f"boatland: error: {n_failed} of {len(table)} trials failed (see above; --allow-failures to accept "
               "them)", file=sys.stderr)
@@ -126,6 +159,7 @@ def _isee(args, campaign, store, where, worst_dir) -> int:
 
     from boatland.campaign.isee import run_isee
     from boatland.campaign.report import write_report
+    from boatland.cli.common import compile_notice
     from boatland.scenario_check import load, resolve_database
 
     s = campaign.isee
@@ -137,6 +171,7 @@ def _isee(args, campaign, store, where, worst_dir) -> int:
                 print(f"campaign {campaign.name} (isee): {len(campaign.cases)} cases, incident {s.incident!r}, target "
                       f"CoV {s.target_cov:g}" + (f", limiting Hs at P = {s.accept:g}" if s.accept is not None else "")
                       + f" on {where} → {store}", file=sys.stderr)
+                compile_notice()
                 bar.append(stack.enter_context(tqdm(total=total, unit="sample", file=sys.stderr, disable=None,
                                                     dynamic_ncols=True)))
             bar[0].total = max(total, bar[0].total or 0)
@@ -151,9 +186,24 @@ def _isee(args, campaign, store, where, worst_dir) -> int:
     data = read_store(store)
     runs = data["stats"]
     n_failed = int(runs["failed"].sum())
+    inc = s.incident
+    if args.json:
+        from boatland.cli.common import print_json
+
+        def rows(table):
+            return [{k: (v.decode() if isinstance(v, bytes) else v.item() if hasattr(v, "item") else v)
+                     for k, v in zip(table.dtype.names, r)} for r in table]
+
+        if worst_dir is not None:
+            _save_worst(campaign, data["trials"], worst_dir, args.save_worst, inc, quiet=True)
+        files = write_report(store, args.report) if args.report else []
+        print_json({"store": str(store), "campaign": campaign.name, "method": "isee", "incident": inc,
+                    "samples": len(result.rows), "failed": n_failed, "runs": rows(runs),
+                    "limits": rows(data["isee_limits"]) if "isee_limits" in data else [],
+                    "report_files": [str(f) for f in files]})
+        return 1 if n_failed and not args.allow_failures else 0
     print(f"wrote {store}: {len(result.rows)} samples in {len(runs)} runs"
           + (f", {n_failed} failed (left out)" if n_failed else ""))
-    inc = s.incident
     for r in runs:
         label = r["label"].decode() or "base"
         print(f"  case {r['case']} ({label}) Hs {r['hs']:.4g} m: P({inc}) = {r[f'{inc}: P']:.3g} "
@@ -176,7 +226,7 @@ def _isee(args, campaign, store, where, worst_dir) -> int:
     return 0
 
 
-def _save_worst(campaign, table, folder: Path, n: int, incident: str) -> None:
+def _save_worst(campaign, table, folder: Path, n: int, incident: str, quiet: bool = False) -> None:
     """The ``n`` heaviest samples run again, exactly, each with its run log ``sample_<trial>.mcap``."""
     from boatland.campaign.isee import rerun_sample, worst_samples
     from boatland.record.mcap_log import McapLog
@@ -192,5 +242,6 @@ def _save_worst(campaign, table, folder: Path, n: int, incident: str) -> None:
         finally:
             log.close()
         w = float(__import__("math").exp(row["isee_log_pbar"]) / row["isee_n"])
-        print(f"wrote {path} (weight {w:.3g}; {row['events'].decode() or 'no events in the access'}; "
-              f"'boatland replay {path}' for Rerun)")
+        if not quiet:
+            print(f"wrote {path} (weight {w:.3g}; {row['events'].decode() or 'no events in the access'}; "
+                  f"'boatland replay {path}' for Rerun)")

@@ -12,7 +12,7 @@ from boatland.errors import BoatlandInputError
 
 __all__ = ["DEFAULT_VESSEL", "resolve_db", "scenario_argument", "screening_options", "freq_load", "freq_sea",
            "freq_check", "freq_setup", "scenario_inputs", "load_guarded", "with_overrides", "check_memory",
-           "available_memory"]
+           "available_memory", "compile_notice", "kernels_cached", "print_json"]
 
 DEFAULT_VESSEL = "ctv24"
 
@@ -129,14 +129,14 @@ def scenario_argument(cmd, optional: bool = True) -> None:
 def screening_options(cmd) -> None:
     """The options ``screen`` and ``operability`` share."""
     cmd.add_argument("--accept", default="best", metavar="P",
-                     help="accepted probability of an incident per access, in (0, 1), or a preset of seed 002 "
-                          "Table 2.1: best (0.00119), conservative (0.00002), non-conservative (0.02681); "
+                     help="accepted probability of an incident per access, in (0, 1), or a preset of Grøtting "
+                          "(2015) Table 2.1: best (0.00119), conservative (0.00002), non-conservative (0.02681); "
                           "default best")
     cmd.add_argument("--statistics", choices=("rayleigh", "rice", "vanmarcke"), default="rayleigh",
-                     help="Rayleigh peaks, one per Tp (seed 002), or Rice up-crossing rates (optionally with "
+                     help="Rayleigh peaks, one per Tp (Grøtting 2015), or Rice up-crossing rates (optionally with "
                           "Vanmarcke's clumping correction); default rayleigh")
     cmd.add_argument("--method", choices=("improved", "wu"), default="improved",
-                     help="hinge model: improved = thrust follows the vessel, fender spring normal (seed 002 "
+                     help="hinge model: improved = thrust follows the vessel, fender spring normal (Grøtting 2015 "
                           "§3.4); wu = rigid hinge, thrust only a static normal force (§3.2.1); default improved")
     cmd.add_argument("--mu", type=in_range(0.0, 5.0), help="friction coefficient μ (default fender.mu_s)")
     cmd.add_argument("--thrust", type=positive("N"), help="bollard push F_b [N] (default thrust.force)")
@@ -190,3 +190,48 @@ def freq_setup(args, scenario, db):
     from boatland.freqdomain import LandingSetup
 
     return LandingSetup.from_scenario(scenario, db, roll_limit_deg=args.roll_limit)
+
+
+def kernels_cached() -> bool:
+    """Whether numba's on-disk cache holds the trial's main kernels for this source (a missing or stale
+    index means the next trial compiles them first, ~30 s). Unknown (numba internals changed): True."""
+    try:
+        from boatland.contact.fender import decide_modes
+        from boatland.integrate.cummins import run_cummins
+        from boatland.trial.events import track_landing
+        from boatland.waves.synthesis import _harmonic_sum
+
+        return all(bool(k._cache._cache_file._load_index())
+                   for k in (run_cummins, decide_modes, track_landing, _harmonic_sum))
+    except Exception:  # noqa: BLE001 - a notice only: never stop a run over it
+        return True
+
+
+def compile_notice() -> None:
+    """One line on stderr when the kernels have to be compiled before the first trial."""
+    if not kernels_cached():
+        print("compiling kernels (first run only, about half a minute) …", file=sys.stderr, flush=True)
+
+
+def _json_safe(obj):
+    """NaN and ±inf → None (JSON has no such numbers), numpy scalars → Python, recursively."""
+    import math
+
+    if isinstance(obj, dict):
+        return {str(k): _json_safe(v) for k, v in obj.items()}
+    if isinstance(obj, (list, tuple)):
+        return [_json_safe(v) for v in obj]
+    if hasattr(obj, "item") and callable(obj.item) and getattr(obj, "ndim", 1) == 0:
+        obj = obj.item()
+    if isinstance(obj, float) and not math.isfinite(obj):
+        return None
+    if isinstance(obj, Path):
+        return str(obj)
+    return obj
+
+
+def print_json(obj) -> None:
+    """Print ``obj`` as indented, strict JSON (non-finite numbers as null; text kept as UTF-8)."""
+    import json
+
+    print(json.dumps(_json_safe(obj), indent=2, ensure_ascii=False, allow_nan=False, default=str))

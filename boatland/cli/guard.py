@@ -22,7 +22,7 @@ from typing import Iterable, Sequence
 from boatland.errors import BoatlandInputError
 
 __all__ = ["Output", "check_outputs", "same_file", "finite", "positive", "in_range", "integer", "seed",
-           "figure_formats", "OneLineParser", "SEED_MAX"]
+           "figure_formats", "OneLineParser", "SEED_MAX", "no_subcommand"]
 
 #: Seeds are stored as signed 64-bit integers (campaign store, run logs).
 SEED_MAX = 2 ** 63 - 1
@@ -33,6 +33,17 @@ class OneLineParser(argparse.ArgumentParser):
 
     def error(self, message: str):  # noqa: D401 - argparse's API
         self.exit(2, f"{self.prog}: error: {message} (see '{self.prog} --help')\n")
+
+
+def no_subcommand(parser):
+    """The ``func`` of a command group called without its sub-command: usage on stderr, exit status 2."""
+    def func(args) -> int:
+        import sys
+
+        parser.print_usage(sys.stderr)
+        print(f"{parser.prog}: error: a command is needed (see '{parser.prog} --help')", file=sys.stderr)
+        return 2
+    return func
 
 
 # ------------------------------------------------------------------------------------ argument types

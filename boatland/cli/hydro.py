@@ -7,7 +7,7 @@ import json
 from pathlib import Path
 
 from boatland.cli.common import DEFAULT_VESSEL, resolve_db
-from boatland.cli.guard import Output, check_outputs, positive
+from boatland.cli.guard import Output, check_outputs, no_subcommand, positive
 
 __all__ = ["add_parser", "cmd_import", "cmd_info", "cmd_build", "cmd_list"]
 
@@ -16,7 +16,7 @@ def add_parser(sub) -> None:
     hydro = sub.add_parser("hydro", help="hydrodynamic databases: import BEM output, summarise, build",
                            description="Hydrodynamic databases (BEMIO HDF5): import, summarise, build.")
     hsub = hydro.add_subparsers(title="hydro commands", metavar="HYDRO_COMMAND")
-    hydro.set_defaults(func=lambda a: hydro.print_help())
+    hydro.set_defaults(func=no_subcommand(hydro))
 
     from boatland.hydro import FORMATS
 
@@ -57,6 +57,7 @@ def add_parser(sub) -> None:
     bld.set_defaults(func=cmd_build)
 
     lst = hsub.add_parser("list", help="list the built-in vessel databases")
+    lst.add_argument("--json", action="store_true", help="print the list as JSON (name, description, file)")
     lst.set_defaults(func=cmd_list)
 
 
@@ -100,6 +101,12 @@ def cmd_build(args) -> int:
 def cmd_list(args) -> int:
     from boatland.hydro.builtin import BUILTIN, builtin_path
 
+    if args.json:
+        from boatland.cli.common import print_json
+
+        print_json([{"name": name, "description": text, "file": str(builtin_path(name))}
+                    for name, text in BUILTIN.items()])
+        return 0
     for name, text in BUILTIN.items():
         print(f"{name:8s} {text}  [{builtin_path(name)}]")
     return 0

@@ -17,7 +17,7 @@ __all__ = ["add_parser", "cmd"]
 def add_parser(sub) -> None:
     op = sub.add_parser(
         "operability", help="availability of access over a wave scatter diagram / hindcast table",
-        description="Availability of push-on access (seed 002 §4.1): the share of the time whose sea state "
+        description="Availability of push-on access (Grøtting 2015, Small Water Plane Area Solutions for Access of Offshore Wind Turbines, NTNU, §4.1): the share of the time whose sea state "
                     "(Hs, Tp, direction) is below the screening's limiting Hs. SCATTER is a CSV with columns Hs, "
                     "Tp, direction_deg (towards, global) or direction_from_deg, occurrence; see "
                     "scenarios/scatter_north_sea.csv.")

@@ -16,8 +16,8 @@ __all__ = ["add_parser", "cmd"]
 def add_parser(sub) -> None:
     rao = sub.add_parser(
         "rao", help="RAOs of the free and the fender-hinged vessel, hinge-force transfer functions",
-        description="Free RAO (seed 000 eq. 3.31) and the RAO of the vessel hinged at its fender point(s) "
-                    "(seed 002 eq. 3.1–3.12, preloaded by the scenario's thrust), the hinge force on the vessel "
+        description="Free RAO (San Nicolás Méndez 2024, Real-Time Simulation of Service Vessels for Offshore Wind Turbine, DTU, eq. 3.31) and the RAO of the vessel hinged at its fender point(s) "
+                    "(Grøtting 2015, Small Water Plane Area Solutions for Access of Offshore Wind Turbines, NTNU, eq. 3.1–3.12, preloaded by the scenario's thrust), the hinge force on the vessel "
                     "(normal, vertical, horizontal, all contacts) and the motion of the free vessel's fender point, "
                     "per unit wave amplitude, in the scenario's relative wave direction.")
     scenario_argument(rao)
@@ -91,10 +91,12 @@ def cmd(args) -> int:
                   f"{r['normal_kN']:7.1f} {r['vertical_kN']:7.1f} {r['horizontal_kN']:7.1f}")
     if args.output:
         from boatland.freqdomain.figures import plot_raos
+        from boatland.trial.inputs import heading_name
 
         wf = np.linspace(max(2 * np.pi / 25.0, db.omega[0]), db.omega[-1], 300)  # T ≤ 25 s
         plot_raos(wf, *solve(wf), args.output,
-                  title=f"{scenario.name}: {db.name}, β = {beta:g}° (relative), per unit wave amplitude")
+                  title=f"{scenario.name}: {db.name}, {heading_name(beta)} (β = {beta:g}°), landed with a push of "
+                        f"{setup.thrust / 1e3:g} kN; per unit wave amplitude")
         if not args.json:
             print(f"wrote {args.output}")
     if args.compare_open_sea:

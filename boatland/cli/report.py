@@ -1,39 +1,47 @@
-"""``boatland report``: tables and figures of a campaign store."""
+"""``boatland report``: the decision table, tables and figures of a campaign store."""
 
 from __future__ import annotations
 
 from pathlib import Path
 
 from boatland.cli.guard import Output, check_outputs, in_range
-from boatland.errors import BoatlandInputError
 
 __all__ = ["add_parser", "cmd"]
 
 
 def add_parser(sub) -> None:
     rep = sub.add_parser(
-        "report", help="tables and figures of a finished campaign store",
-        description="Write per-case tables (CSV and Markdown: P(incident) with Clopper–Pearson intervals, mean "
-                    "time to the incident with χ² intervals), the limiting Hs table and figures (P vs Hs, "
-                    "limiting Hs polar, time-to-incident distributions).")
+        "report", help="decision table, tables and figures of a finished campaign store",
+        description="Print the decision table of a campaign — P(incident within the access) with its Clopper–Pearson "
+                    "95 %% interval per Hs × Tp × heading, the frequency-domain screening beside each cell, the "
+                    "limiting Hs with its interval, and the seeds an interval of --width needs — and write it "
+                    "(decision.md/.csv) with the per-case tables (cases.csv/.md: P and the mean time to the incident "
+                    "with its χ² interval), the limiting-Hs table and figures (P vs Hs, limiting Hs polar with 180° "
+                    "head seas at the top, time-to-incident distributions).")
     rep.add_argument("store", type=Path, help="campaign store (HDF5) written by 'boatland campaign'")
     rep.add_argument("-o", "--output", type=Path, default=Path("report"), help="folder (default: ./report)")
-    rep.add_argument("--incident", help="incident definition for limiting Hs and figures (default: the "
-                                        "first slip-distance definition)")
+    rep.add_argument("--incident", help="incident definition of the decision table, limiting Hs and figures "
+                                        "(default: the first slip-distance definition)")
     rep.add_argument("--target", type=in_range(0.0, 1.0, hi_open=True), default=0.1,
-                     help="accepted probability of the incident within the access (default 0.1)")
+                     help="accepted probability of the incident within the access, for the limiting Hs (default 0.1)")
+    rep.add_argument("--width", type=in_range(0.0, 1.0, hi_open=True), default=0.2,
+                     help="width asked of the 95 %% interval of P near the target: the report says how many seeds "
+                          "per case that needs (default 0.2, i.e. ±0.1)")
+    rep.add_argument("--json", action="store_true", help="print the decision table and the files written as JSON")
     rep.set_defaults(func=cmd)
 
 
 def cmd(args) -> int:
-    from boatland.campaign.report import write_report
-
-    if not 0.0 < args.target < 1.0:
-        raise BoatlandInputError(f"--target must lie in (0, 1), got {args.target}")
-    from boatland.campaign.report import REPORT_FILES
+    from boatland.campaign.report import REPORT_FILES, store_decision, write_report
 
     check_outputs([Output("-o", args.output, "folder", REPORT_FILES)], [args.store])
-    files = write_report(args.store, args.output, incident=args.incident, target=args.target)
-    for f in files:
-        print(f"wrote {f}")
+    dec = store_decision(args.store, incident=args.incident, target=args.target, width=args.width)
+    files = write_report(args.store, args.output, incident=dec.incident, target=args.target, width=args.width)
+    if args.json:
+        from boatland.cli.common import print_json
+
+        print_json({**dec.as_dict(), "files": [str(f) for f in files]})
+        return 0
+    print(dec.text())
+    print(f"wrote {len(files)} files to {args.output}: " + ", ".join(f.name for f in files))
     return 0

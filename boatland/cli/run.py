@@ -17,20 +17,29 @@ def add_parser(sub) -> None:
     run = sub.add_parser(
         "run", help="run one landing trial from a scenario file (default: the built-in CTV trial)",
         description="Run one landing trial: the vessel pushing its bow fender against the boat landing in "
-                    "the scenario's sea, RK4 Cummins integration with stick–slip fender contact. Prints a "
-                    "summary: slip events, time to first slip, slip distance, normal forces, motions, "
-                    "incidents. Without a file: scenarios/ctv_landing.toml (24 m CTV, JONSWAP Hs 1.5 m, "
-                    "80 kN).")
+                    "the scenario's sea, RK4 Cummins integration with stick–slip fender contact. Prints the "
+                    "verdict first — the sea state, push and μ it judged, and whether the fender held or slipped "
+                    "(when, how far) against the scenario's incident thresholds — then slip events, slip "
+                    "distance, forces, motions, incidents and the events after the settling (contacts that "
+                    "change together on one line). Without a file: scenarios/ctv_landing.toml (24 m CTV, "
+                    "JONSWAP Hs 1.5 m, 80 kN).")
     run.add_argument("scenario", nargs="?", type=Path, help="scenario file (TOML); see 'boatland scenario schema'")
-    run.add_argument("--json", action="store_true", help="print the summary as JSON")
-    run.add_argument("-o", "--output", type=Path, help="write the time series, events and summary (HDF5)")
+    run.add_argument("--json", action="store_true",
+                     help="print the verdict, inputs, summary and events as JSON (values rounded to the model's "
+                          "resolution)")
+    run.add_argument("--events", choices=("waves", "all", "none"), default="waves",
+                     help="events to list: after the settling (default), all (with the thrust ramp's settling), none")
+    run.add_argument("-o", "--output", type=Path,
+                     help="write the time series, events and summary (netCDF-4/HDF5: xarray.open_dataset opens it "
+                          "with named dimensions and units)")
     run.add_argument("--duration", type=positive("s"), help="override simulation.duration [s]")
     run.add_argument("--seed", type=seed, help="override simulation.seed (0 … 2**63 − 1)")
-    run.add_argument("--log", type=Path, metavar="MCAP",
+    logs = run.add_mutually_exclusive_group()
+    logs.add_argument("--log", type=Path, metavar="MCAP",
                      help="run log to write (MCAP, written while the trial runs; opens in Foxglove and in Rerun: "
                           "'boatland replay'). Default: <scenario name>.mcap next to -o FILE if given, else in "
                           "the current directory")
-    run.add_argument("--no-log", action="store_true", help="write no run log")
+    logs.add_argument("--no-log", action="store_true", help="write no run log")
     run.add_argument("--rerun", metavar="TARGET",
                      help="also stream the run to Rerun: 'save=PATH.rrd' (a file), 'serve' (viewers connect to "
                           "the printed URL), 'connect[=URL]' (a viewer already listening; default "
@@ -47,7 +56,7 @@ def add_parser(sub) -> None:
 
 
 def cmd(args) -> int:
-    from boatland.cli.common import check_memory, load_guarded
+    from boatland.cli.common import check_memory, compile_notice, load_guarded
     from boatland.trial.simulate import BlowUpError, simulate
 
     path = args.scenario
@@ -62,6 +71,7 @@ def cmd(args) -> int:
     check_memory(scenario, db, flag="--duration" if args.duration is not None else f"{scenario.source}: "
                                                                                      "simulation.duration")
     sinks, log_path, live = _recording_sinks(args, scenario)
+    compile_notice()
     if not args.json:
         print(f"running {scenario.name}: {scenario.simulation.duration:g} s at dt = {scenario.time_step(db):g} s "
               f"({scenario.n_steps(db)} steps), {db.name}, radiation {scenario.radiation.method}", file=sys.stderr)
@@ -82,9 +92,9 @@ def cmd(args) -> int:
     if args.output:
         result.to_hdf5(args.output)
     if args.json:
-        print(json.dumps(result.summary(), indent=2, default=float))
+        print(json.dumps(result.report(args.events), indent=2, default=float, ensure_ascii=False))
     else:
-        print(result.summary_text())
+        print(result.summary_text(args.events))
         if args.output:
             print(f"wrote {args.output}")
         if log_path is not None:

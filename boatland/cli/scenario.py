@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from boatland.cli.guard import no_subcommand
+
 __all__ = ["add_parser", "check", "schema"]
 
 
@@ -12,9 +14,11 @@ def add_parser(sub) -> None:
                           description="Scenario files (TOML): check one without running it, or print the JSON "
                                       "Schema for editors.")
     ssub = scen.add_subparsers(title="scenario commands", metavar="SCENARIO_COMMAND")
-    scen.set_defaults(func=lambda a: scen.print_help())
+    scen.set_defaults(func=no_subcommand(scen))
     chk = ssub.add_parser("check", help="validate a scenario file and its physics against the database")
     chk.add_argument("file", type=Path)
+    chk.add_argument("--json", action="store_true",
+                     help="print the result as JSON: ok, problems with their key paths, warnings, notes, inputs")
     chk.set_defaults(func=check)
     sch = ssub.add_parser("schema", help="print the JSON Schema of scenario files")
     sch.set_defaults(func=schema)
@@ -24,7 +28,12 @@ def check(args) -> int:
     from boatland.scenario_check import check_file
 
     report = check_file(args.file)
-    print(report.text)
+    if args.json:
+        from boatland.cli.common import print_json
+
+        print_json(report.as_dict())
+    else:
+        print(report.text)
     return report.exit_status
 
 

@@ -17,11 +17,13 @@ __all__ = ["add_parser", "cmd"]
 def add_parser(sub) -> None:
     screen = sub.add_parser(
         "screen", help="Wu (2014) slip screening: limiting Hs per (Tp, direction)",
-        description="Frequency-domain slip screening (seed 002 §3.2.1, §3.4): slip-margin transfer functions of "
+        description="Frequency-domain slip screening (Grøtting 2015, Small Water Plane Area Solutions for Access of "
+                    "Offshore Wind Turbines, NTNU, §3.2.1, §3.4; after Wu 2014): slip-margin transfer functions of "
                     "the fender-hinged vessel for downward, upward, left and right slip and roll, their statistics "
                     "in the scenario's spectral shape, and the largest Hs whose incident probability per access is "
-                    "accepted, per peak period and relative wave direction. Prints the table; -o writes a polar "
-                    "figure.")
+                    "accepted, per peak period and relative wave direction. Prints the table and the incident "
+                    "probability in the scenario's own sea (both also with --json); -o writes a polar figure (bow up: "
+                    "180° head seas at the top, waves from starboard on the right, as in 'boatland report').")
     scenario_argument(screen)
     screening_options(screen)
     screen.add_argument("--tp", type=positive("s", 1e4), nargs=3, metavar=("MIN", "MAX", "N"), default=[3.0, 18.0, 16],
@@ -60,13 +62,31 @@ def cmd(args) -> int:
                            sea=sea, water_depth=depth, access_duration=args.access, mu=args.mu, thrust=args.thrust)
     mu = setup.mu if args.mu is None else args.mu
     thrust = setup.thrust if args.thrust is None else args.thrust
+    parts = getattr(scenario.sea.waves, "parts", None) if scenario.sea is not None else None
+    own = None
+    if parts:        # the incident probability in the scenario's own sea, in the text and in --json
+        from boatland.freqdomain import sea_response
+
+        own = sea_response(db, setup.replace(mu=mu, thrust=thrust), parts, water_depth=depth,
+                           statistics=table.statistics, method=table.method, access_duration=args.access)
     if args.json:
-        print(json.dumps({"scenario": scenario.name, "database": db.name, "accept": table.accept,
-                          "statistics": table.statistics, "method": table.method, "mu": mu, "thrust": thrust,
-                          "roll_limit_deg": setup.roll_limit_deg, "Tp": table.Tp.tolist(),
-                          "beta_deg": table.beta_deg.tolist(),
-                          "Hs_limit": [[None if not np.isfinite(h) else float(h) for h in row] for row in table.Hs],
-                          "governing": table.governing.tolist()}, indent=2))
+        from boatland.cli.common import print_json
+
+        out = {"scenario": scenario.name, "database": db.name, "accept": table.accept,
+               "statistics": table.statistics, "method": table.method, "mu": mu, "thrust": thrust,
+               "roll_limit_deg": setup.roll_limit_deg, "access_duration": args.access, "Tp": table.Tp.tolist(),
+               "beta_deg": table.beta_deg.tolist(),
+               "Hs_limit": [[None if not np.isfinite(h) else float(h) for h in row] for row in table.Hs],
+               "governing": table.governing.tolist(), "captured_variance": table.captured.tolist()}
+        if own is not None:
+            out["own_sea"] = {
+                "parts": [{"kind": p.kind, "Hs": p.Hs, "Tp": p.Tp,
+                           "relative_direction_deg": (p.direction_deg - scenario.vessel.heading_deg) % 360}
+                          for p in parts],
+                "p_access": own.p_access, "p_cycle": own.p_cycle, "cycle_period": own.cycle_period,
+                "margins": {m: {"sigma": float(sg), "capacity": float(c)}
+                            for m, sg, c in zip(own.names[:-1], own.sigma, own.capacity[:-1])}}
+        print_json(out)
     else:
         print(f"{scenario.name}: limiting Hs [m] for P_acc = {table.accept:g} per {args.access:g} s access "
               f"({table.statistics}, {table.method} hinge; μ = {mu:g}, F_b = {thrust / 1e3:g} kN, "
@@ -74,12 +94,8 @@ def cmd(args) -> int:
         print(table.text())
         modes, counts = np.unique(table.governing[np.isfinite(table.Hs)], return_counts=True)
         print("governing: " + ", ".join(f"{m} {c}" for m, c in zip(modes, counts)))
-        parts = getattr(scenario.sea.waves, "parts", None) if scenario.sea is not None else None
-        if parts:
-            from boatland.freqdomain import sea_response
-
-            r = sea_response(db, setup.replace(mu=mu, thrust=thrust), parts, water_depth=depth,
-                             statistics=table.statistics, method=table.method, access_duration=args.access)
+        if own is not None:
+            r = own
             print(f"the scenario's own sea ({', '.join(f'Hs {p.Hs:g} m Tp {p.Tp:g} s' for p in parts)}): incident "
                   f"probability {r.p_access:.3g} per access ({r.p_cycle:.3g} per {r.cycle_period:g} s cycle); "
                   "σ of the margins " + ", ".join(f"{m} {s / 1e3:.3g} kN" for m, s in zip(r.names[:-1], r.sigma))
@@ -90,10 +106,21 @@ def cmd(args) -> int:
     if args.output:
         from boatland.freqdomain.figures import plot_limits
 
-        plot_limits(table, args.output)
+        plot_limits(table, args.output, title=f"{scenario.name}: {db.name}, {_sea_shape(scenario)}; push "
+                                              f"{thrust / 1e3:g} kN, μ {mu:g}, roll limit {setup.roll_limit_deg:g}°, "
+                                              f"{args.access:g} s access")
         if not args.json:
             print(f"wrote {args.output}")
     return 0
+
+
+def _sea_shape(scenario) -> str:
+    """The spectral shape the screening scales ("JONSWAP γ 3.3"), or the default."""
+    sea, _ = freq_sea(scenario)
+    if sea is None:
+        return "JONSWAP spectra"
+    names = {"jonswap": "JONSWAP", "pm": "Pierson–Moskowitz", "tma": "TMA"}
+    return names.get(sea.kind, sea.kind) + (f" γ {sea.gamma:g}" if sea.gamma is not None else "") + " spectra"
 
 
 def _shear_sweep(args, scenario, db, setup, beta, sea, depth) -> int:
@@ -120,8 +147,12 @@ def _shear_sweep(args, scenario, db, setup, beta, sea, depth) -> int:
     if args.output:
         from boatland.freqdomain.figures import plot_shear_sweep
 
-        plot_shear_sweep(sw, args.output, title=f"{scenario.name}: limiting Hs at Tp {sw.Tp:g} s against the "
-                                                f"fender's shear stiffness")
+        mu = setup.mu if args.mu is None else args.mu
+        thrust = setup.thrust if args.thrust is None else args.thrust
+        plot_shear_sweep(sw, args.output, title=f"{scenario.name}: limiting Hs at Tp {sw.Tp:g} s against the fender's "
+                                                f"shear stiffness\n{_sea_shape(scenario)}; push {thrust / 1e3:g} kN, "
+                                                f"μ {mu:g}; P = {sw.table.accept:g} per {args.access:g} s access "
+                                                f"({sw.table.statistics})")
         if not args.json:
             print(f"wrote {args.output}")
     return 0

@@ -20,7 +20,7 @@ __all__ = ["BUILTIN", "builtin_path", "load_builtin", "vessel_file"]
 BUILTIN: dict[str, str] = {
     "ctv24": "generic full-scale 24 m CTV catamaran (two Wigley-type demihulls 24 × 2.8 × 1.4 m, 6.2 m apart, "
              "90 t), sea water, deep; boatland's default vessel",
-    "model2": "TUHH tank-test catamaran 'Model 2' (seed 001 Table 4.2: 2.13 m, 60 kg), model scale ~1:10, "
+    "model2": "TUHH tank-test catamaran 'Model 2' (Ferreira González 2023, TU Hamburg, Table 4.2: 2.13 m, 60 kg), model scale ~1:10, "
               "fresh water, deep",
 }
 

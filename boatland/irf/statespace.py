@@ -263,7 +263,7 @@ def fit_state_space(irf: IRF, omega_band: np.ndarray, B_band: np.ndarray, *, tar
                            B_ref=B_band[i, i] if diag else None, passivity_tol=passivity_tol)
             pairs[(i, j)] = fit
             if fit.r2 < target_r2:
-                notes.append(f"{pair_name(i, j)}: R² = {fit.r2:.4f} < {target_r2} at the maximum order {max_order}")
+                notes.append(f"{pair_name(i, j)}: R² = {fit.r2:.6f} < {target_r2:g} at the maximum order {max_order}")
             if not fit.stable:  # cannot happen by construction; guard the invariant
                 raise AssertionError(f"unstable fit for {pair_name(i, j)}")
             if i == j:

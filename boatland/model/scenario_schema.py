@@ -16,7 +16,7 @@ from boatland.irf.impulse import TAILS, TAPERS
 from boatland.model.tomlspec import Key, Table, TableList, Vector
 from boatland.model.tomlspec import json_schema as _json_schema
 
-__all__ = ["DT_MAX", "FENDER_PRESETS", "FENDER_REQUIRED", "LANDING_COMPACT", "LANDING_COMPACT_OPTIONAL",
+__all__ = ["DT_MAX", "FENDER_PRESETS", "FENDER_PRESET_ALIASES", "FENDER_REQUIRED", "LANDING_COMPACT", "LANDING_COMPACT_OPTIONAL",
            "SCENARIO_SCHEMA", "SHEAR_STIFFNESS_DEFAULT", "SHEAR_DAMPING_RATIO_DEFAULT",
            "SEA_KINDS", "SEA_KIND_KEYS", "SEA_PART_KINDS", "json_schema"]
 
@@ -31,14 +31,17 @@ THRUST_RAMP_DEFAULT = 10.0
 SLIP_DISTANCE_DEFAULT = (0.1,)
 ROLL_LIMIT_DEFAULT = (10.0,)
 
-#: Fender presets: values a ``preset`` fills in (explicit keys override). Seed 001 Table 5.4
-#: (model scale, Model 2 in the TUHH tank): friction μ_k 0.7, μ_s 0.9, Stribeck k_v 0.2, δ 1.5,
-#: v_ref 0.2 m/s; spring c_f 0.5 kN/m, damper d_f 0.25 kN s/m.
+#: Fender presets: values a ``preset`` fills in (explicit keys override). Ferreira González (2023),
+#: Development of a Numerical Approach for the Simulation of Boatlanding Maneuvers, TU Hamburg,
+#: Table 5.4 (model scale, Model 2 in the TUHH tank): friction μ_k 0.7, μ_s 0.9, Stribeck k_v 0.2,
+#: δ 1.5, v_ref 0.2 m/s; spring c_f 0.5 kN/m, damper d_f 0.25 kN s/m.
 #: The tank fender is a rigid stick there (the thesis gives no shear stiffness for it).
 FENDER_PRESETS: dict[str, dict[str, float | str]] = {
-    "seed001-table5.4": {"mu_k": 0.7, "mu_s": 0.9, "k_v": 0.2, "delta": 1.5, "v_ref": 0.2,
-                         "stiffness": 500.0, "damping": 250.0, "shear_stiffness": "rigid"},
+    "ferreira-gonzalez-2023-table5.4": {"mu_k": 0.7, "mu_s": 0.9, "k_v": 0.2, "delta": 1.5, "v_ref": 0.2,
+                                        "stiffness": 500.0, "damping": 250.0, "shear_stiffness": "rigid"},
 }
+#: Older preset names, still accepted: alias → preset.
+FENDER_PRESET_ALIASES = {"seed001-table5.4": "ferreira-gonzalez-2023-table5.4"}
 #: Shear stiffness of a full-scale CTV bow fender per contact [N/m]: 3000 kN/m, Wu (2014) as used by
 #: Grøtting (2015, §3.2.2, "Fender modelling") for two 8-inch D fenders; damping 5 % of critical (ibid.).
 SHEAR_STIFFNESS_DEFAULT = 3.0e6
@@ -189,8 +192,10 @@ SCENARIO_SCHEMA = Table({
         doc="the boat landing on the monopile: compact (bearing_deg, strut_spacing, strut_diameter, "
             "standoff) or explicit [[landing.struts]]"),
     "fender": Table({
-        "preset": Key(str, choices=tuple(FENDER_PRESETS), doc="fill the values of a published set "
-                                                              "(explicit keys override)"),
+        "preset": Key(str, choices=(*FENDER_PRESETS, *FENDER_PRESET_ALIASES),
+                      doc="fill the values of a published set (explicit keys override); "
+                          "'ferreira-gonzalez-2023-table5.4' = Ferreira González (2023) Table 5.4, the TUHH tank "
+                          "fender of Model 2 (older name: 'seed001-table5.4')"),
         "points": Vector(row=3, min_size=1, names=_XYZ, required=True,
                          doc="contact points in the body frame [m], one per strut (points[i] meets struts[i])"),
         "stiffness": Key(float, gt=0.0, doc="normal spring c_f per contact [N/m]"),

@@ -21,7 +21,7 @@ import numpy as np
 from boatland.errors import BoatlandInputError, BoatlandWarning
 from boatland.model.scenario_parts import (Fender, InitialState, Landing, Sea, Simulation, Strut, Thrust,
                                            VesselSetup, derive_position, rotation_2d, unit)
-from boatland.model.scenario_schema import (FENDER_PRESETS, FENDER_REQUIRED, LANDING_COMPACT, SCENARIO_SCHEMA,
+from boatland.model.scenario_schema import (FENDER_PRESET_ALIASES, FENDER_PRESETS, FENDER_REQUIRED, LANDING_COMPACT, SCENARIO_SCHEMA,
                                             SEA_KIND_KEYS, SEA_KINDS, SHEAR_DAMPING_RATIO_DEFAULT,
                                             SHEAR_STIFFNESS_DEFAULT)
 from boatland.model.seastate import MeasuredRecord, RegularWave, SeaState, SpectrumPart, spectrum_part_problems
@@ -148,6 +148,7 @@ def fender(ctx: Context) -> Fender | None:
     if "landing" not in ctx.doc:
         ctx.add("fender", "a fender needs a [landing] to push on (omit [fender] for a free-floating run)")
     preset = d.get("preset")
+    preset = FENDER_PRESET_ALIASES.get(preset, preset)       # an older name of the same preset
     values: dict[str, Any] = dict(FENDER_DEFAULTS)
     if preset is not None:
         values.update(FENDER_PRESETS[preset])

@@ -2,13 +2,11 @@
 
 from __future__ import annotations
 
-import json
 from dataclasses import dataclass, field, fields
 from pathlib import Path
 
 import numpy as np
 
-from boatland import __version__
 from boatland.atomic import atomic_path
 from boatland.conventions import DOF_NAMES, DOF_UNITS
 from boatland.model.scenario_parts import Incidents
@@ -149,16 +147,60 @@ class Result(TrialSeries):
             out[SLID_OFF] = min(off) if off else None
         return out
 
+    def slip_starts(self) -> list:
+        """The fender's slip events after the settling: stick → slip of one or more contacts at the same
+        step counted once (a symmetric landing's two tubes slip together) —
+        :class:`~boatland.trial.verdict.MergedEvent` s."""
+        from boatland.trial.verdict import merge_events
+
+        return merge_events(self.slip_events(), self.settled_at)
+
+    def merged_events(self, which: str = "waves") -> list:
+        """Events merged across contacts (:func:`boatland.trial.verdict.merge_events`).
+
+        Parameters
+        ----------
+        which : {"waves", "all", "none"}
+            ``"waves"``: after the settling (:attr:`settled_at`); ``"all"``: the settling's too.
+        """
+        from boatland.trial.verdict import merge_events
+
+        if which not in ("waves", "all", "none"):
+            raise ValueError(f"which must be 'waves', 'all' or 'none', got {which!r}")
+        if which == "none":
+            return []
+        merged = merge_events(self.events, self.settled_at)
+        return merged if which == "all" else [e for e in merged if not e.settling]
+
+    @property
+    def inputs(self) -> dict:
+        """What the trial was run with (:func:`boatland.trial.inputs.trial_inputs`): sea, direction, push, μ."""
+        return dict(self.provenance.get("inputs", {}))
+
+    def verdict(self):
+        """Did the fender hold? :class:`~boatland.trial.verdict.Verdict` against the incident thresholds."""
+        from boatland.trial.verdict import verdict
+
+        return verdict(self, self.summary())
+
     def summary(self) -> dict:
-        """Figures a user reads first (JSON-able)."""
+        """Figures a user reads first (JSON-able, full precision; :meth:`report` rounds them).
+
+        ``slip_events`` counts the fender's slip starts (contacts slipping at the same step once,
+        :meth:`slip_starts`); ``contact_slip_events`` each contact's. The normal forces are those after
+        the settling (:attr:`settled_at`; the whole run if it never touched after it)."""
         slips = self.slip_events()
         worst = self._worst_offset()
         touching = self.mode > 0
-        fn = np.where(touching, self.fn, np.nan)
-        return {
+        landed = touching[self._settle_row():]         # forces after the settling: not the first touch
+        if not landed.any():
+            landed = touching
+        fn = np.where(landed, self.fn[len(self.t) - len(landed):], np.nan)
+        s = {
             "status": self.message,
             "duration": float(self.t[-1]),
-            "slip_events": len(slips),
+            "slip_events": len(self.slip_starts()),
+            "contact_slip_events": len(slips),
             "time_to_first_slip": slips[0].t if slips else None,
             "max_slip_distance": float(worst.max()) if worst is not None and worst.size else 0.0,
             "max_single_slide": max((e.distance for e in self.episodes if e.t_start >= self.settled_at - 1e-9),
@@ -171,48 +213,114 @@ class Result(TrialSeries):
             "incidents": self._incident_times(worst),
             "provenance": self.provenance,
         }
+        from boatland.trial.verdict import verdict
 
-    def summary_text(self) -> str:
+        s["verdict"] = verdict(self, s).as_dict()
+        return s
+
+    def report(self, events: str = "waves") -> dict:
+        """What ``boatland run --json`` prints: the verdict, the inputs, :meth:`summary` rounded to
+        physical resolution (:data:`boatland.trial.verdict.RESOLUTION`: no numerical noise), the
+        settling times and the events merged across contacts (``events`` as in :meth:`merged_events`)."""
+        from boatland.trial.verdict import rounded
+
         s = self.summary()
-        lines = [f"{self.provenance.get('scenario', 'trial')}: {s['status']} after {s['duration']:.1f} s"]
+        units = {"duration": "s", "time_to_first_slip": "s", "max_slip_distance": "m", "max_single_slide": "m",
+                 "max_normal_force": "N", "min_normal_force_in_contact": "N", "contact_fraction": "1"}
+        out = {"verdict": s["verdict"], "inputs": self.inputs}
+        out.update({k: rounded(v, units[k]) if k in units else v for k, v in s.items()
+                    if k not in ("provenance", "verdict")})
+        out["max_motions"] = {k: rounded(v, "m" if k.endswith("[m]") else "deg") for k, v in s["max_motions"].items()}
+        out["incidents"] = {k: rounded(v, "s") for k, v in s["incidents"].items()}
+        out["settled_at"] = self.settled_at
+        out["exposure_from"] = self.exposure_from
+        shown = self.merged_events(events)
+        out["events"] = [e.as_dict() for e in shown]
+        out["events_shown"] = events
+        out["events_hidden"] = len(self.merged_events("all")) - len(shown)
+        out["provenance"] = self.provenance
+        return out
+
+    def summary_text(self, events: str = "waves", max_events: int = 12) -> str:
+        """The verdict line, then the figures, incidents and events for a terminal (rounded: forces to
+        0.1 kN, lengths to 1 mm, angles to 0.01°).
+
+        Parameters
+        ----------
+        events : {"waves", "all", "none"}
+            Which events to list (:meth:`merged_events`); at most ``max_events`` of them.
+        """
+        from boatland.trial.verdict import fmt_angle, fmt_force, fmt_length
+
+        s = self.summary()
+        lines = [s["verdict"]["text"]]
+        lines.append(f"  {s['status']} after {s['duration']:.1f} s"
+                     + (f"; settled at t = {self.settled_at:g} s (thrust on; slides before it are not slips), waves "
+                        f"at full height from t = {self.exposure_from:g} s" if self.mode.shape[1] and self.settled_at > 0
+                        else ""))
         if self.mode.shape[1]:
             first = s["time_to_first_slip"]
+            frac = 100 * s["contact_fraction"]
             lines += [
-                f"  slip events          {s['slip_events']}" + (f" (first at t = {first:.2f} s)" if first is not None else ""),
-                f"  max slip distance    {s['max_slip_distance']:.3f} m from the landing position "
-                f"(largest single slide {s['max_single_slide']:.3f} m)",
-                f"  normal force         max {s['max_normal_force'] / 1e3:.3g} kN, min in contact "
-                f"{s['min_normal_force_in_contact'] / 1e3:.3g} kN" if s["max_normal_force"] is not None
+                f"  slip events          {s['slip_events']}" + (f" (first at t = {first:.2f} s)" if first is not None else "")
+                + (f"; {s['contact_slip_events']} counting each contact" if s["contact_slip_events"] != s["slip_events"]
+                   else ""),
+                f"  max slip distance    {fmt_length(s['max_slip_distance'])} from where it landed "
+                f"(largest single slide {fmt_length(s['max_single_slide'])})",
+                f"  normal force         (after the settling) max {fmt_force(s['max_normal_force'])}, min in contact "
+                f"{fmt_force(s['min_normal_force_in_contact'])}" if s["max_normal_force"] is not None
                 else "  normal force         never in contact",
-                f"  all contacts touching {100 * s['contact_fraction']:.1f} % of the time",
+                f"  all contacts touching {'> 99.9' if 99.95 <= frac < 100 else f'{frac:.1f}'} % of the time",
             ]
-        lines.append("  max motions          " + ", ".join(f"{k} {v:.3g}" for k, v in s["max_motions"].items()))
-        if self.mode.shape[1] and self.settled_at > 0:
-            lines.append(f"  settled at t = {self.settled_at:g} s (thrust on; slides before it are not slips), waves "
-                         f"at full height from t = {self.exposure_from:g} s")
+        motions = []
+        for k, v in s["max_motions"].items():
+            name, unit = k.split(" [")
+            motions.append(f"{name} {fmt_length(v) if unit == 'm]' else fmt_angle(v)}")
+        lines.append("  max motions          " + ", ".join(motions))
         for name, t in s["incidents"].items():
             lines.append(f"  incident {name:21s}" + ("no" if t is None else f"at t = {t:.2f} s"))
-        for e in self.events[:12]:
-            lines.append(f"  event: {e.text()}")
-        if len(self.events) > 12:
-            lines.append(f"  … {len(self.events) - 12} more events (see --json or the output file)")
+        shown = self.merged_events(events)
+        hidden = len(self.merged_events("all")) - len(shown)
+        if events != "none":
+            head = "events after the settling" if events == "waves" else "events"
+            if hidden and events == "waves":
+                head += f" ({hidden} settling events hidden: --events all)"
+            lines.append(f"  {head}:" if shown else f"  {head}: none")
+        for e in shown[:max_events]:
+            lines.append(f"    {e.text()}")
+        if len(shown) > max_events:
+            lines.append(f"    … {len(shown) - max_events} more (all of them in --json and in -o FILE)")
         return "\n".join(lines)
 
+    def to_xarray(self):
+        """The trial as an ``xarray.Dataset``: named variables with units over the dimensions ``time``,
+        ``dof``, ``contact``, ``tangent`` (vertical, horizontal along the landing), ``event`` and
+        ``episode``; the inputs, verdict, summary and provenance as attributes.
+
+        Variables: ``motion``, ``velocity`` and ``wave_force`` (time, dof; SI units per DOF in the
+        coordinate ``dof_units``), the same motions by name (``surge``, ``sway``, ``heave`` [m], ``roll``,
+        ``pitch``, ``yaw`` [deg]), ``thrust`` [N], per contact ``contact_mode`` (0 open, 1 stick, 2 slip,
+        3 off the landing), ``normal_force``, ``friction_force`` (with ``tangent``), ``friction_needed``,
+        ``friction_available`` [N], ``friction_utilisation`` (needed / available), ``landing_position``
+        and ``slide`` [m] (with ``tangent``), ``slip_distance`` [m] (from where it landed: the incident
+        distance), ``friction_work`` [J]; the events (``event_time``, ``event_contact``, ``event_kind``,
+        ``event_needed``, ``event_available``) and slip episodes (``episode_*``) as tables. ``-o FILE``
+        of ``boatland run`` is this dataset: ``xarray.open_dataset(FILE)`` gives it back.
+        """
+        from boatland.trial.dataset import result_dataset
+
+        return result_dataset(self)
+
     def to_hdf5(self, path: str | Path) -> Path:
-        """Write the time series, events and summary to HDF5, atomically (nothing half-written)."""
+        """Write :meth:`to_xarray` as netCDF-4/HDF5 (``xarray.open_dataset(path)`` opens it with its
+        dimensions and units; h5py reads it as plain HDF5), atomically (nothing half-written)."""
         import h5py
 
+        from boatland.netcdf_h5 import write_dataset
+
         path = Path(path)
+        ds = self.to_xarray()
         with atomic_path(path) as tmp:
-            with h5py.File(tmp, "w") as f:
-                f.attrs["boatland_version"] = __version__
-                f.attrs["summary"] = json.dumps(self.summary())
-                for name in SERIES + ("slide", "work"):
-                    if getattr(self, name) is not None:
-                        f.create_dataset(name, data=getattr(self, name), compression="gzip", shuffle=True)
-                f["x"].attrs["columns"] = ",".join(DOF_NAMES)
-                ev = np.array([(e.t, e.contact, e.kind.encode(), e.needed, e.available) for e in self.events],
-                              dtype=[("t", "f8"), ("contact", "i4"), ("kind", "S24"), ("needed", "f8"),
-                                     ("available", "f8")])
-                f["events"] = ev
+            with h5py.File(tmp, "w", track_order=True) as f:
+                write_dataset(ds, f)
         return path

@@ -30,6 +30,7 @@ from boatland.model.scenario import Scenario, ScenarioWarning
 from boatland.model.hydrodb import HydroDB
 from boatland.reproducible import pinned
 from boatland.trial.events import extract_events, slip_episodes
+from boatland.trial.inputs import trial_inputs
 from boatland.trial.result import SERIES, Result
 from boatland.trial.sink import StepBlock, TrialInfo, TrialSink
 
@@ -247,6 +248,7 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
         "database": db.name, "seed": scenario.simulation.seed, "dt": dt, "steps": n,
         "radiation": scenario.radiation.method, "memory": scenario.radiation.memory,
         "waves_from": wave_start(scenario), "wave_ramp": scenario.simulation.start_ramp if waves is not None else 0.0,
+        "inputs": trial_inputs(scenario),
     }
     if override:
         provenance["waves"] = f"{type(waves).__name__} {waves.digest()}" if hasattr(waves, "digest") \

@@ -53,3 +53,40 @@ def test_limiting_hs_interpolates_the_first_crossing():
     assert limiting_hs([0.5, 1.0, 1.5, 2.0], [0.0, 0.05, 0.25, 0.9], 0.1) == pytest.approx(1.0 + 0.5 * 0.05 / 0.2)
     assert math.isnan(limiting_hs([0.5, 1.0], [0.0, 0.05], 0.1))
     assert limiting_hs([1.0, 0.5], [0.5, 0.3], 0.1) == 0.5                   # unsorted input; above at once
+
+
+def test_crossing_says_when_the_sweep_does_not_cross():
+    from boatland.campaign.stats import crossing
+
+    hs = [0.25, 0.5, 0.75]
+    assert crossing(hs, [0.0, 0.2, 1.0], 0.1).where == "inside"
+    assert crossing(hs, [0.0, 0.2, 1.0], 0.1).value == pytest.approx(0.375)
+    low = crossing(hs, [0.5, 0.75, 1.0], 0.1)          # already above the target at the lowest Hs: not a crossing
+    assert (low.where, low.value, low.text()) == ("below", 0.25, "< 0.25 m")
+    high = crossing(hs, [0.0, 0.0, 0.05], 0.1)
+    assert (high.where, high.value, high.text()) == ("above", 0.75, "> 0.75 m")
+
+
+def test_limiting_hs_interval_from_the_clopper_pearson_bounds():
+    """4 seeds per case (the demo campaign): k = 0, 3, 4, 4 along Hs 0.25 … 1 m."""
+    from boatland.campaign.stats import limiting_hs_interval
+
+    hs = [0.25, 0.5, 0.75, 1.0]
+    cp = [clopper_pearson(k, 4) for k in (0, 3, 4, 4)]
+    p, lo, hi = (np.array(c) for c in zip(*cp))
+    lim = limiting_hs_interval(hs, p, lo, hi, 0.1)
+    assert lim.estimate.where == "inside" and lim.estimate.value == pytest.approx(0.25 + 0.1 / 0.75 * 0.25)
+    assert lim.lower.where == "below"                    # the upper bound 0.60 > 0.1 already at 0.25 m
+    assert lim.upper.where == "inside" and lim.upper.value == pytest.approx(0.25 + 0.1 / lo[1] * 0.25)
+    assert lim.text() == f"{lim.estimate.value:.3g} m [< 0.25, {lim.upper.value:.3g}]"
+
+
+@pytest.mark.parametrize("p, width", [(0.1, 0.2), (0.5, 0.2), (0.1, 0.1), (0.02, 0.05)])
+def test_seeds_for_width_is_the_fewest_that_give_the_width(p, width):
+    from boatland.campaign.stats import seeds_for_width
+
+    n = seeds_for_width(p, width)
+    _, lo, hi = clopper_pearson(round(p * n), n)
+    assert hi - lo <= width
+    _, lo, hi = clopper_pearson(round(p * (n - 1)), n - 1)
+    assert hi - lo > width

@@ -288,9 +288,12 @@ def test_defaults_are_filled_once():
     assert s.time_step() == pytest.approx(0.03) and s.simulation.start_ramp == 6.0
 
 
-def test_preset_fills_and_explicit_keys_override():
-    s = make({"fender": {"preset": "seed001-table5.4", "points": BASE["fender"]["points"], "mu_s": 1.0}})
-    assert (s.fender.mu_s, s.fender.mu_k, s.fender.stiffness, s.fender.preset) == (1.0, 0.7, 500.0, "seed001-table5.4")
+@pytest.mark.parametrize("name", ["ferreira-gonzalez-2023-table5.4", "seed001-table5.4"])
+def test_preset_fills_and_explicit_keys_override(name):
+    """Ferreira González (2023) Table 5.4, under its name and its older alias (stored by its name)."""
+    s = make({"fender": {"preset": name, "points": BASE["fender"]["points"], "mu_s": 1.0}})
+    assert (s.fender.mu_s, s.fender.mu_k, s.fender.stiffness, s.fender.preset) == \
+        (1.0, 0.7, 500.0, "ferreira-gonzalez-2023-table5.4")
     assert s.fender.mu(0.0) == pytest.approx(1.0)
     assert s.fender.mu(10.0) == pytest.approx(0.7 + 0.2 * 10.0)
 

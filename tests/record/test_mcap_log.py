@@ -36,7 +36,7 @@ def test_channels_schemas_counts_and_metadata(recorded):
     assert run["boatland"] == __version__ and int(run["seed"]) == recorded.scenario.simulation.seed
     assert json.loads(run["scenario"])["name"] == "ctv_landing" and run["run_id"] == recorded.run_id
     assert float(run["dt"]) == r.provenance["dt"] and int(run["n_steps"]) == n - 1
-    assert json.loads(meta["boatland.summary"]["summary"])["slip_events"] == len(r.slip_events())
+    assert json.loads(meta["boatland.summary"]["summary"])["slip_events"] == len(r.slip_starts())
 
 
 def test_step_values_equal_the_result(recorded):

@@ -1,0 +1,97 @@
+"""The command line: --json wherever a table is printed, exit statuses, flags that exclude each other,
+refusals before any work, and the run's verdict output."""
+
+import json
+
+import pytest
+
+from boatland.cli import main
+
+SCENARIO_CHECK_KEYS = {"file", "ok", "scenario", "summary", "inputs", "problems", "warnings", "notes"}
+
+
+def test_no_command_is_a_usage_error(capsys):
+    assert main([]) == 2
+    err = capsys.readouterr().err
+    assert "usage: boatland" in err and "no command given" in err
+    assert main(["hydro"]) == 2 and main(["scenario"]) == 2
+
+
+def test_log_and_no_log_exclude_each_other(capsys):
+    assert main(["run", "--log", "x.mcap", "--no-log"]) == 2
+    assert "not allowed with argument --log" in capsys.readouterr().err
+
+
+def test_a_bad_rerun_target_fails_before_anything_runs(capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    assert main(["run", "--rerun", "bogus"]) == 2
+    err = capsys.readouterr().err
+    assert "--rerun bogus" in err and "running" not in err and list(tmp_path.iterdir()) == []
+
+
+def test_output_in_a_missing_folder_is_refused_before_the_run(tmp_path, capsys):
+    assert main(["run", "-o", str(tmp_path / "out" / "run.h5")]) == 2
+    err = capsys.readouterr().err
+    assert "the folder" in err and "does not exist" in err and "running" not in err
+
+
+def test_scenario_check_json(repo_root, tmp_path, capsys):
+    assert main(["scenario", "check", str(repo_root / "scenarios" / "ctv_landing.toml"), "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert set(out) == SCENARIO_CHECK_KEYS and out["ok"] and out["inputs"]["Hs"] == 1.5
+    bad = tmp_path / "bad.toml"
+    bad.write_text("[sea]\nkind = 'jonswap'\nHs = -1\nTp = 7\n")
+    assert main(["scenario", "check", str(bad), "--json"]) == 2
+    out = json.loads(capsys.readouterr().out)
+    assert not out["ok"] and {"key": "sea.Hs", "message": "must be > 0, got -1"} in out["problems"]
+
+
+def test_hydro_list_json(capsys):
+    assert main(["hydro", "list", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert [d["name"] for d in out] == ["ctv24", "model2"] and all(d["file"].endswith(".h5") for d in out)
+    assert "seed 00" not in json.dumps(out)
+
+
+def test_screen_json_keeps_the_own_sea_probability(capsys):
+    assert main(["screen", "--tp", "6", "8", "2", "--directions", "2", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    own = out["own_sea"]
+    assert own["parts"] == [{"kind": "jonswap", "Hs": 1.5, "Tp": 7.0, "relative_direction_deg": 180.0}]
+    assert 0 <= own["p_access"] <= 1 and own["margins"]
+    assert main(["screen", "--tp", "6", "8", "2", "--directions", "2"]) == 0
+    assert f"incident probability {own['p_access']:.3g} per access" in capsys.readouterr().out
+
+
+def test_run_prints_the_verdict_first_and_json_has_events(capsys, tmp_path):
+    assert main(["run", "--duration", "45", "--no-log"]) == 0
+    out = capsys.readouterr().out.splitlines()
+    assert out[0].startswith("SLIPPED at t = ") and "JONSWAP Hs 1.5 m, Tp 7 s" in out[0] and "push 80 kN" in out[0]
+    assert not [ln for ln in out if "e-" in ln]                   # no 1.2e-05 kN, no 3e-15 m
+    assert not [ln for ln in out if "contact 0:" in ln]           # a symmetric landing: "contacts 0+1"
+    assert "settling events hidden: --events all" in "\n".join(out)
+    assert main(["run", "--duration", "45", "--no-log", "--json", "--events", "all"]) == 0
+    rep = json.loads(capsys.readouterr().out)
+    assert rep["verdict"]["outcome"] == "slipped" and rep["inputs"]["thrust"] == 80e3
+    assert rep["events"][0]["settling"] and rep["events"][0]["contacts"] == [0, 1]
+    assert rep["events_shown"] == "all" and rep["events_hidden"] == 0
+
+
+@pytest.mark.parametrize("argv", [["--json"], ["--events", "none"]])
+def test_run_options_parse(argv):
+    from boatland.cli import _parser
+
+    args = _parser().parse_args(["run", *argv])
+    assert args.events in ("waves", "none")
+
+
+def test_compile_notice_only_when_the_kernels_are_not_cached(monkeypatch, capsys):
+    from boatland.cli import common
+
+    assert common.kernels_cached() in (True, False)
+    monkeypatch.setattr(common, "kernels_cached", lambda: False)
+    common.compile_notice()
+    assert capsys.readouterr().err.strip() == "compiling kernels (first run only, about half a minute) …"
+    monkeypatch.setattr(common, "kernels_cached", lambda: True)
+    common.compile_notice()
+    assert capsys.readouterr().err == ""
