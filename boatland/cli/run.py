@@ -33,7 +33,10 @@ def add_parser(sub) -> None:
                      help="write the time series, events and summary (netCDF-4/HDF5: xarray.open_dataset opens it "
                           "with named dimensions and units)")
     run.add_argument("--duration", type=positive("s"), help="override simulation.duration [s]")
-    run.add_argument("--seed", type=seed, help="override simulation.seed (0 … 2**63 − 1)")
+    run.add_argument("--seed", type=seed, help="override simulation.seed (0 … 2**63 − 1). The sea is fixed by the seed, "
+                                               "the spectrum and the component keys ([sea] n_components, "
+                                               "repeat_period = 600 s, band_tail): a run up to repeat_period long "
+                                               "is the start of the same sea whatever --duration")
     logs = run.add_mutually_exclusive_group()
     logs.add_argument("--log", type=Path, metavar="MCAP",
                      help="run log to write (MCAP, written while the trial runs; opens in Foxglove and in Rerun: "

@@ -58,7 +58,7 @@ SEA_KINDS = ("jonswap", "pm", "tma", "regular", "measured", "none")
 SEA_PART_KINDS = ("jonswap", "pm", "tma")
 _DIRECTION = ("direction_deg", "relative_direction_deg")
 _SPECTRUM_KEYS = ("Hs", "Tp", "omega_p", "gamma", "sigma_a", "sigma_b", "spreading", *_DIRECTION)
-_SPECTRAL_SEA = ("n_components", "band_tail", "amplitudes")
+_SPECTRAL_SEA = ("n_components", "repeat_period", "band_tail", "amplitudes")
 #: For each ``sea.kind`` (``"parts"`` = a sum of ``[[sea.parts]]``, no kind): the keys allowed at
 #: ``[sea]``, the keys required, and the groups of which exactly one is required.
 SEA_KIND_KEYS: dict[str, dict[str, tuple]] = {
@@ -231,6 +231,10 @@ SCENARIO_SCHEMA = Table({
                                                 "(calm); omit it with [[sea.parts]]"),
         **_spectrum_keys(False),
         "n_components": Key(int, ge=1, doc="minimum wave components per spectral part (default 256)"),
+        "repeat_period": Key(float, gt=0.0, doc="shortest record the components do not repeat within [s] "
+                                                "(default 600): the seed, the spectrum and the component keys fix "
+                                                "the sea, so every run up to this long is the start of the same "
+                                                "sea; a longer run draws more components (another sea)"),
         "band_tail": Key(float, gt=0.0, le=0.1, doc="variance fraction left outside each part's band "
                                                     "(default 0.002)"),
         "amplitudes": Key(str, choices=("deterministic", "rayleigh"), doc="component amplitudes "

@@ -384,7 +384,7 @@ def _build_sea(ctx: Context, mode: str, d: Mapping, heading: float, h: float):
         parts = [_part(ctx, d, mode, "sea.", heading)]
     if any(p is None for p in parts):
         return None
-    opts = {k: d[k] for k in ("n_components", "band_tail", "amplitudes") if k in d}
+    opts = {k: d[k] for k in ("n_components", "repeat_period", "band_tail", "amplitudes") if k in d}
     s = SeaState(parts=tuple(parts), water_depth=h, **opts)
     shortest = min(2 * math.pi / spectrum_band(p.Tp, p.gamma, 2 * SIGNIFICANT_TAIL)[1] for p in s.parts)
     return s, min(p.Tp for p in s.parts), shortest

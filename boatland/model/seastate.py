@@ -272,7 +272,16 @@ class SeaState(_Waves):
         Gravity [m/s²].
     n_components : int
         Minimum number of components per part (default 256); the non-repetition rule may require
-        more: N = max(n_components, ⌈T_dur (ω_hi − ω_lo) / 2π⌉) (:mod:`boatland.waves.realisation`).
+        more: N = max(n_components, ⌈max(T_dur, repeat_period) (ω_hi − ω_lo) / 2π⌉)
+        (:mod:`boatland.waves.realisation`).
+    repeat_period : float
+        Shortest record [s] the components must not repeat within (default 600 s), whatever the
+        duration asked. The sea is fixed by the seed, the spectrum and these component settings
+        (n_components, repeat_period, band_tail, omega_min/max, amplitudes): every record up to
+        ``repeat_period`` long is the start of the same sea (a 60-s run is the first minute of the
+        600-s run of the same seed). A longer record needs more components to keep the non-repetition
+        rule and so draws a different sea: set ``repeat_period`` to the longest duration that must
+        share one sea.
     band_tail : float
         Fraction of each part's variance left outside its band, half at each end (default 0.002:
         the realised Hs is 0.999 of the target); :func:`boatland.waves.spectra.spectrum_band`.
@@ -292,6 +301,7 @@ class SeaState(_Waves):
     water_depth: float = math.inf
     g: float = 9.81
     n_components: int = 256
+    repeat_period: float = 600.0
     band_tail: float = 0.002
     omega_min: float | None = None
     omega_max: float | None = None
@@ -309,6 +319,9 @@ class SeaState(_Waves):
         n = self.n_components
         if not isinstance(n, (int, np.integer)) or isinstance(n, bool) or n < 1:
             out.append(("n_components", f"must be an integer ≥ 1 (minimum wave components per part), got {n!r}"))
+        if not _is_number(self.repeat_period) or not 0.0 < self.repeat_period < math.inf:
+            out.append(("repeat_period", "must be a finite time > 0 s (the shortest record the components must "
+                                         f"not repeat within), got {self.repeat_period!r}"))
         if not _is_number(self.band_tail) or not 0.0 < self.band_tail <= 0.1:
             out.append(("band_tail", "must be in (0, 0.1] (variance fraction outside the band), "
                                      f"got {self.band_tail!r}"))
@@ -327,6 +340,7 @@ class SeaState(_Waves):
         object.__setattr__(self, "water_depth", float(self.water_depth))
         object.__setattr__(self, "g", float(self.g))
         object.__setattr__(self, "n_components", int(n))
+        object.__setattr__(self, "repeat_period", float(self.repeat_period))
         for i, p in enumerate(parts):
             w = _steepness_warning(f"sea state: parts[{i}] (Hs {p.Hs:g} m, Tp {p.Tp:g} s)", p.Hs, p.omega_p,
                                    self.water_depth, self.g)
@@ -360,8 +374,10 @@ class SeaState(_Waves):
         return spectrum_band(p.Tp, p.gamma, self.band_tail)
 
     def n_components_for(self, duration: float) -> list[int]:
-        """Components per part for a record of ``duration`` seconds (the non-repetition rule)."""
-        return [max(self.n_components, n_components_for(duration, *self.band(i))) for i in range(len(self.parts))]
+        """Components per part for a record of ``duration`` seconds: the non-repetition rule over
+        max(duration, :attr:`repeat_period`), so every record up to ``repeat_period`` is the same sea."""
+        span = max(float(duration), self.repeat_period)
+        return [max(self.n_components, n_components_for(span, *self.band(i))) for i in range(len(self.parts))]
 
     def hm0(self) -> float:
         r""":math:`4\sqrt{m_0}` [m] of the whole spectrum (all parts; < the parts' Hs for TMA in shallow water)."""

@@ -77,6 +77,8 @@ def test_unusual_gamma_and_breaking_steepness_warn():
     (dict(water_depth=-5), r"water_depth: must be > 0 m"),
     (dict(n_components=0), r"n_components: must be an integer ≥ 1"),
     (dict(band_tail=0.5), r"band_tail: must be in \(0, 0.1\]"),
+    (dict(repeat_period=0.0), r"repeat_period: must be a finite time > 0 s"),
+    (dict(repeat_period=math.inf), r"repeat_period: must be a finite time > 0 s"),
     (dict(omega_min=0.3), r"omega_max: give both omega_min and omega_max"),
     (dict(omega_min=2.0, omega_max=1.0), r"omega_max: must be > omega_min = 2 rad/s"),
     (dict(amplitudes="random"), r"amplitudes: must be one of 'deterministic', 'rayleigh'"),
@@ -105,6 +107,7 @@ def test_defaults_and_immutability():
     assert isinstance(p.Hs, float) and SpectrumPart(Hs=1, Tp=7, kind="pm").gamma == 1.0
     sea = SeaState(parts=p)
     assert sea.parts == (p,) and sea.water_depth == math.inf and sea.n_components == 256
+    assert sea.repeat_period == 600.0 and sea.n_components_for(60.0) == sea.n_components_for(600.0) == [402]
     assert sea.amplitudes == "deterministic" and sea.default_ramp_time == 14.0
     with pytest.raises(dataclasses.FrozenInstanceError):
         sea.water_depth = 10.0

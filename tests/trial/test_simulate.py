@@ -145,3 +145,31 @@ def test_a_trial_from_shipped_kernel_arrays_and_pile_tables_is_the_same_trial(la
     for name in ("x", "v", "F_exc", "mode", "fn", "ft", "tpos"):
         assert getattr(shipped, name).tobytes() == getattr(own, name).tobytes(), name
     assert own.slip_events() and len(shipped.events) == len(own.events)
+
+
+def test_the_same_seed_gives_the_same_sea_whatever_the_duration(landing):
+    """The sea is fixed by the seed, the spectrum and the component settings (``sea.repeat_period``,
+    default 600 s), not by the duration: a 60-s run is the first minute of the 600-s run — the same
+    components, the same elevation at the bow and the same excitation and motions to round-off."""
+    from boatland.waves.synthesis import elevation_series
+
+    sc, db = landing
+    short, long_ = sc.replace({"simulation.duration": 60.0}), sc.replace({"simulation.duration": 600.0})
+    waves = sc.wave_model(db)
+    a, b = waves.realise(sc.simulation.seed, 60.0), waves.realise(sc.simulation.seed, 600.0)
+    assert a.size == b.size > 256 and all(np.array_equal(p, q) for p, q in zip(a, b))
+    dt = sc.time_step(db)
+    n = int(round(60.0 / dt)) + 1
+    eta60 = elevation_series(a, 10.0, 0.0, 0.0, dt, n)
+    eta600 = elevation_series(b, 10.0, 0.0, 0.0, dt, int(round(600.0 / dt)) + 1)[:n]
+    assert np.abs(eta60 - eta600).max() <= 1e-9 * np.abs(eta600).max()
+    r60, r600 = simulate(short, db), simulate(long_, db)
+    m = len(r60.t)
+    assert np.array_equal(r60.t, r600.t[:m])
+    scale = np.abs(r600.F_exc[:m]).max(axis=0)
+    assert np.all(np.abs(r60.F_exc - r600.F_exc[:m]).max(axis=0) <= 1e-9 * scale)
+    dx = np.abs(r60.x - r600.x[:m]).max(axis=0)            # translations [m] and rotations [rad] apart
+    assert dx[:3].max() <= 1e-9 * np.abs(r600.x[:m, :3]).max(), dx
+    assert dx[3:].max() <= 1e-9 * np.abs(r600.x[:m, 3:]).max(), dx
+    # a longer record than repeat_period needs more components: another sea, as the help says
+    assert waves.realise(sc.simulation.seed, 1800.0).size > b.size
