@@ -28,6 +28,7 @@ from boatland.hydro import read_hydro
 from boatland.hydro.builtin import BUILTIN, load_builtin
 from boatland.model.hydrodb import HydroDB
 from boatland.model.landed import check_memory
+from boatland.resources import shipped_scenarios
 from boatland.model.limits import document_problems, scenario_problems
 from boatland.model.scenario import Scenario, ScenarioWarning, load_scenario
 from boatland.model.scenario_checks import ScenarioCheck
@@ -48,14 +49,15 @@ def schema_text() -> str:
 
 
 def default_scenario_path() -> Path:
-    """``scenarios/ctv_landing.toml`` of the source checkout.
+    """The default trial ``ctv_landing.toml``, shipped in the package (``boatland/scenarios/``; the
+    checkout's ``scenarios/`` is a link to it), so an installed wheel finds it without the sources.
 
     Raises
     ------
     BoatlandInputError
-        When the scenarios folder is not beside the package (an installed copy without the sources).
+        When the package was installed without its data (a broken install).
     """
-    path = Path(__file__).resolve().parents[1] / "scenarios" / DEFAULT_SCENARIO
+    path = shipped_scenarios() / DEFAULT_SCENARIO
     if not path.is_file():
         raise BoatlandInputError(f"the default scenario is not available ({path} not found); give a scenario file")
     return path

@@ -61,9 +61,10 @@ def open_store(path: str | Path, *, grid: bool = False):
     BoatlandInputError
         Not a finished campaign store (one line).
     """
-    import xarray as xr
-
     from boatland.campaign.report import read_store
+    from boatland.resources import require
+
+    xr = require("xarray", "a campaign store as an xarray Dataset")
 
     data = read_store(path)
     trials, stats, plan, header = data["trials"], data["stats"], data["plan"], data["header"]

@@ -249,9 +249,11 @@ def build_database(spec: VesselSpec, *, progress: bool = True) -> HydroDB:
         A, B at every frequency, X for 0..360°, A_inf and A_0 (deep water), C, M, the full wetted
         hull mesh, and provenance notes saying how it was computed.
     """
-    import capytaine as cpt
     from tqdm import tqdm
 
+    from boatland.resources import require
+
+    cpt = require("capytaine", "building a hydrodynamic database (boatland hydro build)")
     t0 = time.perf_counter()
     rho, g, depth = spec.rho, spec.g, spec.water_depth
     hull = spec.hull

@@ -64,7 +64,9 @@ def vessel_file(name: str) -> Path:
     BoatlandInputError
         Unknown name, or no source checkout around the package.
     """
-    path = Path(__file__).resolve().parents[2] / "scenarios" / "vessels" / f"{_check(name)}.toml"
+    from boatland.resources import shipped_scenarios
+
+    path = shipped_scenarios() / "vessels" / f"{_check(name)}.toml"
     if not path.is_file():
         raise BoatlandInputError(f"the vessel file of {name!r} is not available ({path} not found): "
                                  "it is in the scenarios/vessels folder of the boatland source")

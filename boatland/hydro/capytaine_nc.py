@@ -55,8 +55,10 @@ def read_capytaine(path: str | Path, *, ref_point=None) -> HydroDB:
         The file is missing or unreadable, or a variable is missing, misshaped or NaN where it
         cannot be dropped; the message names the file and the variable.
     """
-    import xarray as xr
+    from boatland.resources import require
 
+    xr = require("xarray", "reading a Capytaine NetCDF file")
+    require("netCDF4", "reading a Capytaine NetCDF file")
     path = Path(path)
     if not path.is_file():
         raise HydroDataError(path, None, "file not found; expected a Capytaine NetCDF dataset (.nc)")

@@ -41,8 +41,9 @@ def _flat_inputs(inputs: dict) -> dict:
 def result_dataset(r):
     """The :class:`~boatland.trial.result.Result` ``r`` as an ``xarray.Dataset`` (see
     :meth:`~boatland.trial.result.Result.to_xarray`)."""
-    import xarray as xr
+    from boatland.resources import require
 
+    xr = require("xarray", "Result.to_xarray")
     nc = r.mode.shape[1]
     t = np.asarray(r.t, dtype=float)
     var = {}

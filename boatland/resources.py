@@ -1,0 +1,43 @@
+"""What ships with the package and what is optional.
+
+- :func:`shipped_scenarios`: the scenario, vessel and campaign files installed with boatland
+  (``boatland/scenarios/``; the source checkout's ``scenarios/`` is a link to the same folder), found
+  through :mod:`importlib.resources`, so a wheel installed anywhere runs its default trial.
+- :func:`require`: an optional dependency (Capytaine, xarray, netCDF4: the ``bem`` and ``xarray``
+  extras), imported where a command needs it, or one line saying which extra installs it.
+"""
+
+from __future__ import annotations
+
+import importlib
+from importlib.resources import files
+from pathlib import Path
+
+from boatland.errors import BoatlandInputError
+
+__all__ = ["shipped_scenarios", "require", "EXTRAS"]
+
+#: Optional module → the extra that installs it (``pip install 'boatland[<extra>]'``).
+EXTRAS = {"capytaine": "bem", "netCDF4": "bem", "xarray": "xarray"}
+
+
+def shipped_scenarios() -> Path:
+    """Folder of the shipped scenario files (``ctv_landing.toml``, ``vessels/``, ``campaigns/``)."""
+    return Path(str(files("boatland") / "scenarios"))
+
+
+def require(module: str, what: str):
+    """Import the optional ``module`` for ``what`` (e.g. "boatland hydro build").
+
+    Raises
+    ------
+    BoatlandInputError
+        One line naming the command, the missing module and the extra that installs it (exit 2: the user
+        can fix it).
+    """
+    try:
+        return importlib.import_module(module)
+    except ImportError:
+        extra = EXTRAS.get(module.split(".")[0], "all")
+        raise BoatlandInputError(f"{what} needs {module.split('.')[0]}, an optional dependency: "
+                                 f"pip install 'boatland[{extra}]'") from None
