@@ -32,7 +32,7 @@ from mcap.writer import CompressionType, Writer
 from boatland import __version__
 from boatland.errors import BoatlandInputError
 from boatland.record.columns import BowElevation, Columns, LandingTracker, settle_row, world_pose
-from boatland.record.foxglove_scene import arrow_items, arrow_values, static_scene
+from boatland.record.foxglove_scene import arrow_items, arrow_values_compiled, static_scene
 from boatland.record.scene import Scene, scene_from_trial, scene_metadata
 from boatland.record.schemas import LOG_FORMAT, LOG_LEVEL, RAD2DEG, STEP_TOPICS, TOPICS, file_descriptor_set, \
     message_class
@@ -320,7 +320,7 @@ class McapLog:
         slip = np.empty(block.mode.shape)
         worst = track_landing(block.mode, block.tpos, self._anchor, slip, max(0, settle_row(self.info) - block.k0))
         t_ns = np.rint(np.asarray(block.t) * NS).astype(np.int64) + self.epoch
-        arrows = arrow_values(self._scene, block.x, block.fn, block.ft, block.mode)
+        arrows = arrow_values_compiled(self._scene, block.x, block.fn, block.ft, block.mode)
         rows = self._layout.encode(t_ns, block, slip, self._eta(block.k0, block.k1), self.info.start_pose, arrows)
         buf, size, add, seq = rows.tobytes(), self._layout.size, self._writer.add_message, self._seq
         for i, t in enumerate(t_ns.tolist()):

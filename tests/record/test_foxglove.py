@@ -92,6 +92,20 @@ def test_force_arrows_every_step_coloured_by_the_contact_state(recorded):
     np.testing.assert_allclose(fl, np.hypot(r.ft[..., 0], r.ft[..., 1]) * FORCE_SCALE, rtol=1e-9, atol=1e-12)
 
 
+def test_compiled_arrows_equal_the_readable_reference(recorded):
+    """The run log's compiled arrows (hot path) equal the numpy reference over the whole run, and for
+    a start pose with a heading (rotation into the global frame)."""
+    from boatland.record.foxglove_scene import arrow_values, arrow_values_compiled
+    from boatland.record.scene import scene_from_trial
+
+    r, sc, db = recorded.result, recorded.scenario, recorded.db
+    for pose in (sc.start_pose(), (-3.0, 4.0, 0.7)):
+        scene = scene_from_trial(sc, db, pose, contact_arrays(sc, db), waves=False)
+        ref = arrow_values(scene, r.x, r.fn, r.ft, r.mode)
+        np.testing.assert_allclose(arrow_values_compiled(scene, r.x, r.fn, r.ft, r.mode), ref, rtol=1e-12, atol=1e-12)
+        assert np.isfinite(ref).all()
+
+
 def test_shipped_layout_is_the_generated_one_and_names_real_fields(recorded):
     shipped = json.loads(layout_path().read_text())
     assert shipped.keys() >= {"configById", "layout", "globalVariables", "userNodes", "playbackConfig"}
