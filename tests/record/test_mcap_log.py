@@ -234,3 +234,49 @@ def test_a_flipped_byte_fails_the_crc_validation(recorded, tmp_path, where):
     with open(bad, "rb") as f, pytest.raises(CRCValidationError, match=f"crc validation failed in {record}"):
         for _ in NonSeekingReader(f, validate_crcs=True).iter_messages():
             pass
+
+
+def test_a_format_1_log_reads_like_format_2(recorded, tmp_path):
+    """Logs written before format 2 (radians, log time = simulated time, no ``log_format``) still read:
+    the recorded log rewritten the old way reads back to the same columns and events."""
+    from mcap.writer import Writer
+
+    from boatland.record.reader import read_run_log
+    from boatland.record.schemas import ANGLE_FIELDS, VESSEL_STATE_FIELDS
+
+    r = recorded.result
+    epoch = _epoch(recorded.mcap)
+    State = message_class("boatland.VesselState")
+    old = tmp_path / "v1.mcap"
+    with open(recorded.mcap, "rb") as f, open(old, "wb") as out:
+        reader = make_reader(f)
+        s = reader.get_summary()
+        w = Writer(out)
+        w.start(profile="", library=reader.get_header().library)
+        sid = {i: w.register_schema(sc.name, sc.encoding, sc.data) for i, sc in s.schemas.items()}
+        cid = {i: w.register_channel(c.topic, c.message_encoding, sid[c.schema_id]) for i, c in s.channels.items()}
+        for m in reader.iter_metadata():
+            meta = dict(m.metadata)
+            for key in ("log_format", "start_time_ns", "start_time"):
+                meta.pop(key, None)
+            w.add_metadata(m.name, meta)
+        k = 0
+        for _, ch, msg in reader.iter_messages(log_time_order=False):
+            data = msg.data
+            if ch.topic == "/vessel/state":                   # radians, as format 1 wrote them
+                st = State.FromString(data)
+                for j, field in enumerate(VESSEL_STATE_FIELDS):
+                    if j in ANGLE_FIELDS:
+                        setattr(st, field, r.x[k, j - 1] if j < 7 else r.v[k, j - 7])
+                data, k = st.SerializeToString(), k + 1
+            w.add_message(cid[ch.id], msg.log_time - epoch, data, msg.publish_time - epoch, msg.sequence)
+        w.finish()
+    assert k == len(r.t)
+    v1, v2 = read_run_log(old), read_run_log(recorded.mcap)
+    assert v1.complete and "log_format" not in v1.metadata and int(v2.metadata["log_format"]) == 2
+    np.testing.assert_array_equal(v1.columns.t, r.t)
+    np.testing.assert_array_equal(v1.columns.x, r.x)                        # the radians as written
+    np.testing.assert_array_equal(v1.columns.v, r.v)
+    np.testing.assert_array_max_ulp(v2.columns.x, r.x, maxulp=1)          # through degrees: ≤ 1 ulp
+    np.testing.assert_array_max_ulp(v2.columns.v, r.v, maxulp=1)
+    assert v1.events == v2.events and v1.events[-1][0] == r.t[-1]           # event times from t = 0 in both
