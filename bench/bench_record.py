@@ -1,7 +1,7 @@
 """Logging overhead of the recording sinks (issue 6): the default trial alone, with the MCAP log, and
 with MCAP + Rerun .rrd, wall time of the whole ``simulate`` call (median of ``--repeat`` runs).
 
-    python bench/bench_record.py [--duration 1800] [--repeat 5]
+    python bench/bench_record.py [--duration 1800] [--repeat 5] [--kinds none,mcap]
 
 Also reports the time spent inside the sinks (on the main thread, overlapping the kernel's worker thread)
 and the file sizes. Figures are quoted in bench/README.md.
@@ -54,6 +54,8 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--duration", type=float, default=1800.0)
     ap.add_argument("--repeat", type=int, default=5)
+    ap.add_argument("--kinds", default="none,null sink,mcap,mcap+rrd",
+                    help="comma-separated cases to run (default: all four; 'none' is the reference)")
     args = ap.parse_args()
     scenario, db, _ = load_checked(default_scenario_path())
     scenario = scenario.replace({"simulation.duration": args.duration})
@@ -74,7 +76,9 @@ def main() -> None:
     n = scenario.n_steps(db)
     print(f"default trial, {args.duration:g} s simulated, {n} steps; {os.cpu_count()} CPUs; "
           f"load average before {os.getloadavg()[0]:.2f}")
-    kinds = ("none", "null sink", "mcap", "mcap+rrd")
+    kinds = tuple(k.strip() for k in args.kinds.split(","))
+    if kinds[0] != "none" or not set(kinds) <= {"none", "null sink", "mcap", "mcap+rrd"}:
+        ap.error("--kinds: 'none' first, then any of 'null sink', 'mcap', 'mcap+rrd'")
     walls: dict = {k: [] for k in kinds}
     busy: dict = {k: [] for k in kinds}
     for _ in range(args.repeat):          # interleaved, so that a change of machine load hits all three

@@ -1,47 +1,52 @@
 """The run log: an MCAP file written block by block while the trial runs (a :class:`TrialSink`).
 
-Every block the simulation hands over (about one second of simulated time) becomes one (lz4) chunk with
-its message indexes, written and flushed before :meth:`McapLog.steps` returns: a run killed at any
+The file is framed by the ``mcap`` library's :class:`mcap.writer.Writer` (chunks, message indexes,
+summary, CRCs: the chunks', the data section's and the summary's). Every block the simulation hands
+over (about one second of simulated time) becomes one chunk with its message indexes, written and
+flushed (:meth:`mcap.writer.Writer.flush`) before :meth:`McapLog.steps` returns: a run killed at any
 moment leaves a file whose complete chunks hold every block handed over before the kill (the replay
-recovers them, :mod:`boatland.record.replay`). :meth:`McapLog.finish` adds the summary section
-(statistics, chunk indexes) and the footer, so a finished log is an ordinary indexed MCAP.
+recovers them, :mod:`boatland.record.replay`). :meth:`McapLog.finish` adds the summary section and the
+footer, so a finished log is an ordinary indexed MCAP.
 
-Messages are serialised with numpy (:class:`boatland.record.schemas.Encoder`) and the chunk records are
-assembled as arrays: the per-step cost is a few array operations per block, not Python objects.
+The messages of a block are serialised at once by a compiled encoder into an (n, size) byte matrix
+(:class:`_Layout`): every step's messages have the same bytes layout, only the values change, so the
+per-step cost is the library's framing of the five step messages, not protobuf objects.
+
+Time: ``log_time`` = the run's wall-clock start (whole seconds since the Unix epoch, UTC; metadata
+``start_time_ns``, ``start_time``) + the simulated time, so Foxglove's timeline shows when the run was
+made; the messages also carry the simulated time ``t``. Angles are logged in degrees
+(:data:`~boatland.record.schemas.LOG_FORMAT` 2, :mod:`boatland.record.schemas`).
 """
 
 from __future__ import annotations
 
 import json
-import struct
-import zlib
+import time
+from datetime import datetime, timezone
 from pathlib import Path
 
-import lz4.frame
 import numba
 import numpy as np
-import zstandard
-from mcap.records import (Channel, DataEnd, Footer, Header, Metadata, MetadataIndex, Schema,
-                          Statistics, SummaryOffset)
-from mcap.data_stream import RecordBuilder
-from mcap.opcode import Opcode
+from mcap.writer import CompressionType, Writer
 
 from boatland import __version__
 from boatland.errors import BoatlandInputError
 from boatland.record.columns import BowElevation, Columns, LandingTracker, settle_row, world_pose
+from boatland.record.foxglove_scene import arrow_items, arrow_values_compiled, static_scene
+from boatland.record.scene import Scene, scene_from_trial, scene_metadata
+from boatland.record.schemas import LOG_FORMAT, LOG_LEVEL, RAD2DEG, STEP_TOPICS, TOPICS, file_descriptor_set, \
+    message_class
 from boatland.trial.events import track_landing
-from boatland.record.scene import scene_metadata
-from boatland.record.schemas import LOG_LEVEL, TOPICS, file_descriptor_set, message_class
 
-__all__ = ["McapLog", "PROFILE", "LIBRARY", "METADATA_NAME", "SUMMARY_NAME", "columns_from_block", "block_values", "step_events", "end_event",
-           "IncidentWatch"]
+__all__ = ["McapLog", "PROFILE", "LIBRARY", "METADATA_NAME", "SUMMARY_NAME", "columns_from_block", "block_values",
+           "step_events", "end_event", "IncidentWatch"]
 
-MAGIC = b"\x89MCAP0\r\n"
 PROFILE = ""                      # protobuf messages, no ROS profile
 LIBRARY = f"boatland {__version__}"
 METADATA_NAME = "boatland.run"    # scenario document, version, seed, dt, start pose, …
 SUMMARY_NAME = "boatland.summary"  # Result.summary() at the end of a run
 NS = 1_000_000_000
+_COMPRESSION = {"lz4": CompressionType.LZ4, "zstd": CompressionType.ZSTD, "": CompressionType.NONE}
 
 
 def columns_from_block(block, info, tracker: LandingTracker, eta_bow: np.ndarray) -> Columns:
@@ -63,83 +68,107 @@ def _padded_varint(values: np.ndarray, width: int = 5) -> np.ndarray:
     return out
 
 
-class _Layout:
-    """Byte layout of the message records of one step, all topics of :data:`STEP_TOPICS` side by side.
+def _varint(n: int) -> bytes:
+    out = bytearray()
+    while True:
+        b, n = n & 0x7F, n >> 7
+        out.append(b | (0x80 if n else 0))
+        if not n:
+            return bytes(out)
 
-    Every step's records have the same size, so a block of ``n`` steps is an (n, size) byte matrix:
-    the template holds the constant bytes (opcodes, lengths, channel ids, protobuf tags) and per block
-    only the values are scattered in — doubles, enums, sequence numbers, times — a handful of array
-    operations for the whole block.
+
+def _compile(items: list) -> tuple[bytearray, list]:
+    """Bytes of a fixed-layout protobuf message and the positions of its values: ``items`` are
+    ``("const", bytes)``, ``("f8", field)`` (a double), ``("enum", field)`` (one byte, values 0…127),
+    ``("timestamp", field)`` (a ``google.protobuf.Timestamp`` with 5-byte varints) and
+    ``("msg", field, items)`` (a nested message). Returns (template, [(kind, offset)])."""
+    body, where = bytearray(), []
+    for kind, *arg in items:
+        if kind == "const":
+            body += arg[0]
+        elif kind == "f8":
+            body.append((arg[0] << 3) | 1)
+            where.append(("f8", len(body)))
+            body += bytes(8)
+        elif kind == "enum":
+            body.append(arg[0] << 3)
+            where.append(("enum", len(body)))
+            body += bytes(1)
+        elif kind == "timestamp":
+            body += bytes([(arg[0] << 3) | 2, 12, 0x08])
+            where.append(("timestamp", len(body)))
+            body += bytes(5) + b"\x10" + bytes(5)
+        else:                                            # a nested message
+            sub, sub_where = _compile(arg[1])
+            body += bytes([(arg[0] << 3) | 2]) + _varint(len(sub))
+            where += [(k, len(body) + o) for k, o in sub_where]
+            body += sub
+    return body, where
+
+
+def step_items(n_contacts: int) -> dict:
+    """The fixed layouts of a step's messages, by topic (:data:`~boatland.record.schemas.STEP_TOPICS`)."""
+    f8 = lambda first, k: [("f8", first + i) for i in range(k)]  # noqa: E731
+    contact = ("msg", 2, [("enum", 1)] + f8(2, 8))
+    return {
+        "/tf": [("timestamp", 1), ("const", b"\x12\x05world\x1a\x06vessel"), ("msg", 4, f8(1, 3)),
+                ("msg", 5, f8(1, 4))],
+        "/vessel/state": f8(1, 13),
+        "/vessel/loads": f8(1, 9),
+        "/fender/state": f8(1, 1) + [contact] * n_contacts,
+        "/fender/forces": arrow_items(n_contacts),
+    }
+
+
+class _Layout:
+    """Byte layout of the payloads of one step, all topics of :data:`STEP_TOPICS` side by side.
+
+    Every step's payloads have the same size, so a block of ``n`` steps is an (n, size) byte matrix: the
+    template holds the constant bytes (protobuf tags, lengths, frame names) and per block only the
+    values are scattered in — doubles, enums, timestamps — a handful of array operations (:meth:`fill`)
+    or one compiled pass (:meth:`encode`) for the whole block. ``spans`` gives each topic's
+    ``(start, end)`` in a row.
     """
 
-    def __init__(self, n_contacts: int, ids: dict):
-        f8 = lambda first, k: [("f8", first + i) for i in range(k)]  # noqa: E731
-        vec3 = [("const", b"\x22\x1b")] + f8(1, 3)                  # translation: 3 × 9 bytes
-        quat = [("const", b"\x2a\x24")] + f8(1, 4)                  # rotation: 4 × 9 bytes
-        contact = [("const", bytes([(2 << 3) | 2, 1 + 1 + 9 * 8])), ("enum", 1)] + f8(2, 8)
-        payloads = {
-            "/tf": [("timestamp", 1), ("const", b"\x12\x05world\x1a\x06vessel")] + vec3 + quat,
-            "/vessel/state": f8(1, 13),
-            "/vessel/loads": f8(1, 9),
-            "/fender/state": f8(1, 1) + contact * n_contacts,
-        }
-        row, dpos, epos, seqpos, timepos, self.offsets = bytearray(), [], [], [], [], {}
-        for topic, payload in payloads.items():
+    def __init__(self, n_contacts: int):
+        row, dpos, epos, tspos, self.spans = bytearray(), [], [], [], {}
+        for topic, items in step_items(n_contacts).items():
+            body, where = _compile(items)
             start = len(row)
-            self.offsets[ids[topic]] = start
-            body = bytearray()
-            for kind, val in payload:
-                if kind == "const":
-                    body += val
-                elif kind == "f8":
-                    body += bytes([(val << 3) | 1])
-                    dpos.append(start + 31 + len(body))
-                    body += bytes(8)
-                elif kind == "enum":                     # values 0…127: one byte
-                    body += bytes([val << 3])
-                    epos.append(start + 31 + len(body))
-                    body += bytes(1)
-                elif kind == "timestamp":                # google.protobuf.Timestamp, 5-byte varints
-                    body += bytes([(val << 3) | 2, 12, 0x08])
-                    self.tpos = start + 31 + len(body)
-                    body += bytes(5) + b"\x10" + bytes(5)
-            row += struct.pack("<BQHIQQ", Opcode.MESSAGE, 22 + len(body), ids[topic], 0, 0, 0) + body
-            seqpos += range(start + 11, start + 15)
-            timepos += range(start + 15, start + 31)
+            self.spans[topic] = (start, start + len(body))
+            for kind, off in where:
+                {"f8": dpos, "enum": epos, "timestamp": tspos}[kind].append(start + off)
+            row += body
         self.template = np.frombuffer(bytes(row), np.uint8)
         self.size = len(row)
         self.dpos = np.asarray(dpos, dtype=np.int64)
         self.dpos8 = (self.dpos[:, None] + np.arange(8)).ravel()
         self.epos = np.asarray(epos, dtype=np.int64)
-        self.seqpos = np.asarray(seqpos, dtype=np.int64)
-        self.timepos = np.asarray(timepos, dtype=np.int64)
-        self.n_topics = len(payloads)
+        self.tspos = np.asarray(tspos, dtype=np.int64)
 
-    def fill(self, seq0: int, t_ns: np.ndarray, doubles: np.ndarray, enums: np.ndarray) -> np.ndarray:
-        """(n, size) bytes of ``n`` steps: ``doubles`` (n, K) in field order, ``enums`` (n, Nc)."""
+    def fill(self, t_ns: np.ndarray, doubles: np.ndarray, enums: np.ndarray) -> np.ndarray:
+        """(n, size) bytes of ``n`` steps: log times ``t_ns`` (n,), ``doubles`` (n, K) in field order,
+        ``enums`` (n, Nc)."""
         n = len(t_ns)
         rec = np.tile(self.template, (n, 1))
-        seq = np.arange(seq0, seq0 + n, dtype="<u4").view(np.uint8).reshape(n, 4)
-        rec[:, self.seqpos] = np.tile(seq, (1, self.n_topics))
-        tb = t_ns.astype("<u8").view(np.uint8).reshape(n, 8)
-        rec[:, self.timepos] = np.tile(tb, (1, 2 * self.n_topics))
         rec[:, self.dpos8] = doubles.view(np.uint8).reshape(n, -1)
         rec[:, self.epos] = enums
-        rec[:, self.tpos:self.tpos + 5] = _padded_varint(t_ns // NS)
-        rec[:, self.tpos + 6:self.tpos + 11] = _padded_varint(t_ns % NS)
+        sec, nsec = _padded_varint(t_ns // NS), _padded_varint(t_ns % NS)
+        for p in self.tspos:
+            rec[:, p:p + 5] = sec
+            rec[:, p + 6:p + 11] = nsec
         return rec
 
-    def encode(self, seq0: int, t_ns: np.ndarray, block, slip: np.ndarray, eta: np.ndarray, start_pose) -> np.ndarray:
-        """Same bytes as ``fill(seq0, t_ns, *block_values(columns))``, compiled: the hot path."""
+    def encode(self, t_ns: np.ndarray, block, slip: np.ndarray, eta: np.ndarray, start_pose,
+               extra: np.ndarray) -> np.ndarray:
+        """Same bytes as ``fill(t_ns, *block_values(columns, extra))``, compiled: the hot path. ``extra``
+        (n, Ke): the doubles after the fender state's (the force arrows, :func:`arrow_values`)."""
         out = np.empty((len(t_ns), self.size), np.uint8)
         x0, y0, psi = start_pose
-        _encode_steps(out, self.template, self.dpos, self.epos, self.seqpos, self.timepos, self.tpos, seq0, t_ns,
-                      block.t, block.x, block.v, block.F_exc, block.thrust, eta, block.fn, block.ft, block.needed,
-                      block.available, slip, block.tpos, block.mode, float(x0), float(y0), float(psi))
+        _encode_steps(out, self.template, self.dpos, self.epos, self.tspos, t_ns, block.t, block.x, block.v,
+                      block.F_exc, block.thrust, eta, block.fn, block.ft, block.needed, block.available, slip,
+                      block.tpos, block.mode, float(x0), float(y0), float(psi), np.ascontiguousarray(extra))
         return out
-
-
-STEP_TOPICS = ("/tf", "/vessel/state", "/vessel/loads", "/fender/state")
 
 
 @numba.njit(cache=True)
@@ -152,14 +181,14 @@ def _put(out, i, pos, value, scratch):
 
 
 @numba.njit(cache=True)
-def _encode_steps(out, template, dpos, epos, seqpos, timepos, tpos, seq0, t_ns, t, x, v, F, thrust, eta, fn, ft,
-                  needed, available, slip, tp, mode, x0, y0, psi):  # pragma: no cover - compiled
-    """Fill ``out`` (n, size) with the message records of n steps: :meth:`_Layout.fill` of
-    :func:`block_values` in one compiled pass (pose as :func:`~boatland.record.columns.world_pose`)."""
+def _encode_steps(out, template, dpos, epos, tspos, t_ns, t, x, v, F, thrust, eta, fn, ft, needed, available, slip,
+                  tp, mode, x0, y0, psi, extra):  # pragma: no cover - compiled
+    """Fill ``out`` (n, size) with the payloads of n steps: :meth:`_Layout.fill` of :func:`block_values`
+    in one compiled pass (pose as :func:`~boatland.record.columns.world_pose`, angles in degrees)."""
     n, nc = mode.shape
     f8 = np.empty(1, np.float64)
-    i8 = np.empty(1, np.int64)
     vals = np.empty(dpos.size)
+    base = 30 + 8 * nc
     cpsi, spsi = np.cos(psi), np.sin(psi)
     for i in range(n):
         out[i, :] = template
@@ -173,9 +202,12 @@ def _encode_steps(out, template, dpos, epos, seqpos, timepos, tpos, seq0, t_ns, 
         vals[5] = cr * cp * sy - sr * sp * cy
         vals[6] = cr * cp * cy + sr * sp * sy
         vals[7] = t[i]
-        for k in range(6):
+        for k in range(3):
             vals[8 + k] = x[i, k]
+            vals[11 + k] = x[i, 3 + k] * RAD2DEG
             vals[14 + k] = v[i, k]
+            vals[17 + k] = v[i, 3 + k] * RAD2DEG
+        for k in range(6):
             vals[22 + k] = F[i, k]
         vals[20] = t[i]
         vals[21] = thrust[i]
@@ -187,31 +219,32 @@ def _encode_steps(out, template, dpos, epos, seqpos, timepos, tpos, seq0, t_ns, 
             vals[b + 3], vals[b + 4], vals[b + 5] = needed[i, c], available[i, c], slip[i, c]
             vals[b + 6], vals[b + 7] = tp[i, c, 0], tp[i, c, 1]
             out[i, epos[c]] = mode[i, c]
+        for k in range(extra.shape[1]):
+            vals[base + k] = extra[i, k]
         for k in range(dpos.size):
             _put(out, i, dpos[k], vals[k], f8)
-        seq = seq0 + i
-        for j in range(seqpos.size):
-            out[i, seqpos[j]] = (seq >> (8 * (j % 4))) & 0xFF
-        i8[0] = t_ns[i]
-        tb = i8.view(np.uint8)
-        for j in range(timepos.size):
-            out[i, timepos[j]] = tb[j % 8]
         sec, nsec = t_ns[i] // 1_000_000_000, t_ns[i] % 1_000_000_000
-        for j in range(5):
-            more = 0x80 if j < 4 else 0
-            out[i, tpos + j] = ((sec >> (7 * j)) & 0x7F) | more
-            out[i, tpos + 6 + j] = ((nsec >> (7 * j)) & 0x7F) | more
+        for p in tspos:
+            for j in range(5):
+                more = 0x80 if j < 4 else 0
+                out[i, p + j] = ((sec >> (7 * j)) & 0x7F) | more
+                out[i, p + 6 + j] = ((nsec >> (7 * j)) & 0x7F) | more
 
 
-def block_values(c: Columns) -> tuple[np.ndarray, np.ndarray]:
-    """The doubles of the step messages in field order, (n, K), and the contact modes (n, Nc) uint8."""
+def block_values(c: Columns, extra: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """The doubles of the step messages in field order, (n, K) — angles in degrees — and the contact
+    modes (n, Nc) uint8; ``extra`` (n, Ke) are appended (the force arrows)."""
     n, nc = c.mode.shape
     per_contact = np.stack([c.fn, c.ft[:, :, 0], c.ft[:, :, 1], c.needed, c.available, c.slip,
                             c.tpos[:, :, 0], c.tpos[:, :, 1]], axis=2).reshape(n, 8 * nc)
     t = c.t[:, None]
-    V = np.concatenate([c.translation, c.quaternion, t, c.x, c.v, t, c.thrust[:, None], c.F_exc,
-                        c.eta_bow[:, None], t, per_contact], axis=1, dtype="<f8")
-    return V, c.mode.astype(np.uint8)
+    x, v = np.array(c.x, float), np.array(c.v, float)
+    x[:, 3:] *= RAD2DEG
+    v[:, 3:] *= RAD2DEG
+    parts = [c.translation, c.quaternion, t, x, v, t, c.thrust[:, None], c.F_exc, c.eta_bow[:, None], t, per_contact]
+    if extra is not None:
+        parts.append(extra)
+    return np.concatenate(parts, axis=1, dtype="<f8"), c.mode.astype(np.uint8)
 
 
 class McapLog:
@@ -222,30 +255,33 @@ class McapLog:
     path : str or Path
         The ``.mcap`` file; replaced if it exists.
     compression : {"lz4", "zstd", ""}
-        Chunk compression: lz4 (default) is about 5 µs per block against 25 µs for zstd level 1, for
-        files 3 % larger (the doubles of the states hardly compress).
+        Chunk compression: lz4 (default) is several times faster per block than zstd, for files a few
+        per cent larger (the doubles of the states hardly compress).
     run_id : str, optional
         Stored in the metadata; the replay uses it as Rerun recording id (give the live Rerun stream
         the same one).
+    start_time : float, optional
+        The run's start [s since the Unix epoch, UTC], the origin of the log times (rounded down to a
+        whole second); default: the wall clock when the trial starts.
 
     Notes
     -----
-    Loss on a crash: each :meth:`steps` call writes its block as complete chunk + indexes and flushes
-    the file before returning, so a killed run keeps every block handed over before it was killed
-    (the block being written at that moment, at most about 1 s of simulated time, may be lost). The
-    sea at the bow is summed per block (:class:`~boatland.record.columns.BowElevation`), so the first
-    block is written as soon as the kernel has finished it.
+    Loss on a crash: each :meth:`steps` call writes its block as a complete chunk with its message
+    indexes and flushes the file before returning, so a killed run keeps every block handed over before
+    it was killed (the block being written at that moment, at most about 1 s of simulated time, may be
+    lost). The sea at the bow is summed per block (:class:`~boatland.record.columns.BowElevation`), so
+    the first block is written as soon as the kernel has finished it.
     """
 
-    def __init__(self, path: str | Path, *, compression: str = "lz4", run_id: str = ""):
+    def __init__(self, path: str | Path, *, compression: str = "lz4", run_id: str = "",
+                 start_time: float | None = None):
         self.path = Path(path)
         self.run_id = run_id
-        self.compression = compression
-        if compression not in ("lz4", "zstd", ""):
+        if compression not in _COMPRESSION:
             raise ValueError(f"compression: expected 'lz4', 'zstd' or '', got {compression!r}")
-        self._compress = {"lz4": lz4.frame.compress, "zstd": zstandard.ZstdCompressor(level=1).compress,
-                          "": None}[compression]
-        self._f = None
+        self.compression = compression
+        self.start_time = start_time
+        self._f = self._writer = None
         self.info = None
 
     # --------------------------------------------------------------------------- sink interface
@@ -255,207 +291,74 @@ class McapLog:
             self._f = open(self.path, "wb")
         except OSError as exc:
             raise BoatlandInputError(f"{self.path}: cannot write the run log: {exc.strerror}") from None
-        self._pos = 0
-        self._chunk_indexes: list[bytes] = []
-        self._meta_indexes: list[MetadataIndex] = []
-        self._counts = {topic: 0 for topic in TOPICS}
-        self._t_range = [None, None]
+        start = time.time() if self.start_time is None else float(self.start_time)
+        self.epoch = int(start) * NS                  # log_time of t = 0
         nc = np.asarray(info.contacts[0]).reshape(-1, 3).shape[0]
         self._anchor = np.full((nc, 2), np.nan)      # landing positions carried across blocks
-        self._eta = BowElevation(info)   # the sea at the bow, summed block by block
+        self._eta = BowElevation(info)               # the sea at the bow, summed block by block
         self._incidents = IncidentWatch(info.scenario)
+        self._scene: Scene = scene_from_trial(info.scenario, info.db, info.start_pose, info.contacts, waves=False)
         self._log_cls = message_class("foxglove.Log")
-        b = RecordBuilder()
-        Header(profile=PROFILE, library=LIBRARY).write(b)
-        self._schemas, self._channels = [], []
-        for i, (topic, name) in enumerate(TOPICS.items(), 1):
-            s = Schema(id=i, name=name, encoding="protobuf", data=file_descriptor_set(name))
-            ch = Channel(id=i, topic=topic, message_encoding="protobuf", schema_id=i, metadata={})
-            s.write(b)
-            ch.write(b)
-            self._schemas.append(s)
-            self._channels.append(ch)
-        self._ids = {topic: i for i, topic in enumerate(TOPICS, 1)}
-        self._layout = _Layout(nc, self._ids)
-        self._step_offsets = np.array([self._layout.offsets[self._ids[t]] for t in STEP_TOPICS], "<u8")
-        self._mi_cache: dict = {}
-        self._write(MAGIC)
-        self._write(b.end())
-        self._metadata(METADATA_NAME, run_metadata(info) | {"run_id": self.run_id})
-        self._f.flush()
+        self._layout = _Layout(nc)
+        self._seq = 0
+        w = self._writer = Writer(self._f, chunk_size=1 << 62, compression=_COMPRESSION[self.compression],
+                                  enable_crcs=True, enable_data_crcs=True)
+        w.start(profile=PROFILE, library=LIBRARY)
+        schema_ids = {name: w.register_schema(name, "protobuf", file_descriptor_set(name))
+                      for name in dict.fromkeys(TOPICS.values())}
+        self._ids = {topic: w.register_channel(topic, "protobuf", schema_ids[name]) for topic, name in TOPICS.items()}
+        self._spans = [(self._ids[topic], a, b) for topic, (a, b) in self._layout.spans.items()]
+        stamp = datetime.fromtimestamp(self.epoch // NS, timezone.utc).isoformat()
+        w.add_metadata(METADATA_NAME, {k: str(v) for k, v in (run_metadata(info) | {
+            "run_id": self.run_id, "log_format": LOG_FORMAT, "start_time_ns": self.epoch, "start_time": stamp,
+        }).items()})
+        # the first chunk: schemas, channels and the static scene, on disk before the kernel starts
+        w.add_message(self._ids["/scene"], self.epoch, static_scene(self._scene, self.epoch), self.epoch, 0)
+        w.flush()
 
     def steps(self, block) -> None:
         slip = np.empty(block.mode.shape)
         worst = track_landing(block.mode, block.tpos, self._anchor, slip, max(0, settle_row(self.info) - block.k0))
-        t_ns = np.rint(np.asarray(block.t) * NS).astype(np.int64)
-        rows = self._layout.encode(self._counts["/tf"], t_ns, block, slip, self._eta(block.k0, block.k1),
-                                   self.info.start_pose)
-        events = [] if not block.events and not self._incidents.may_fire(worst, block.x) else \
-            step_events(block, block.t, block.x, slip, self._incidents)
-        if events:
-            self._write_chunk([(STEP_TOPICS, t_ns, rows),
-                               ("/events", np.array([e[0] for e in events], np.int64), self._log_records(events))])
-        else:
-            self._write_steps_chunk(t_ns, rows)
+        t_ns = np.rint(np.asarray(block.t) * NS).astype(np.int64) + self.epoch
+        arrows = arrow_values_compiled(self._scene, block.x, block.fn, block.ft, block.mode)
+        rows = self._layout.encode(t_ns, block, slip, self._eta(block.k0, block.k1), self.info.start_pose, arrows)
+        buf, size, add, seq = rows.tobytes(), self._layout.size, self._writer.add_message, self._seq
+        for i, t in enumerate(t_ns.tolist()):
+            base = i * size
+            for cid, a, b in self._spans:
+                add(cid, t, buf[base + a:base + b], t, seq + i)
+        self._seq += len(t_ns)
+        if block.events or self._incidents.may_fire(worst, block.x):
+            self._events(step_events(block, block.t, block.x, slip, self._incidents))
+        self._writer.flush()
 
     def finish(self, result) -> None:
-        if self._f is None:
+        if self._writer is None:
             return
-        t_end, level, text = end_event(result)
-        self._write_chunk([("/events", np.array([t_end], np.int64), self._log_records([(t_end, level, text)]))])
-        self._metadata(SUMMARY_NAME, {"summary": json.dumps(result.summary(), default=float)})
+        self._events([end_event(result)])
+        self._writer.flush()
+        self._writer.add_metadata(SUMMARY_NAME, {"summary": json.dumps(result.summary(), default=float)})
         self._close()
 
     def close(self) -> None:
         """Finish the file without a result (e.g. after an error elsewhere): still a valid MCAP."""
-        if self._f is not None:
+        if self._writer is not None:
             self._close()
 
     # --------------------------------------------------------------------------------- writing
-    def _write(self, data) -> None:
-        self._f.write(data)
-        self._pos += len(data)
-
-    def _metadata(self, name: str, meta: dict) -> None:
-        b = RecordBuilder()
-        Metadata(name=name, metadata={k: str(v) for k, v in meta.items()}).write(b)
-        data = b.end()
-        self._meta_indexes.append(MetadataIndex(offset=self._pos, length=len(data), name=name))
-        self._write(data)
-
-    def _log_records(self, events) -> list[bytes]:
-        """Message records (header + foxglove.Log) of a few events ``(t_ns, level, text)``."""
-        out = []
-        cid, seq = self._ids["/events"], self._counts["/events"]
-        for i, (t_ns, level, text) in enumerate(events):
+    def _events(self, events) -> None:
+        """A few events ``(t_ns from the start, level, text)`` as ``foxglove.Log`` messages."""
+        cid = self._ids["/events"]
+        for t_ns, level, text in events:
+            t = self.epoch + int(t_ns)
             m = self._log_cls(level=LOG_LEVEL[level], message=text, name="boatland")
-            m.timestamp.seconds, m.timestamp.nanos = divmod(int(t_ns), NS)
-            data = m.SerializeToString()
-            out.append(struct.pack("<BQHIQQ", Opcode.MESSAGE, 22 + len(data), cid, seq + i, t_ns, t_ns) + data)
-        return out
-
-    def _write_steps_chunk(self, t_ns: np.ndarray, rows: np.ndarray) -> None:
-        """The common case of :meth:`_write_chunk`: a block of steps without events, with the message
-        indexes of the four step channels built as one structured array (cached layout per block size)."""
-        n, size = rows.shape
-        mi = self._mi_cache.get(n)
-        if mi is None:
-            dt = np.dtype([("op", "u1"), ("len", "<u8"), ("cid", "<u2"), ("nb", "<u4"),
-                           ("e", [("t", "<u8"), ("o", "<u8")], (n,))])
-            mi = np.zeros(len(STEP_TOPICS), dt)
-            mi["op"], mi["len"], mi["nb"] = Opcode.MESSAGE_INDEX, 6 + 16 * n, 16 * n
-            mi["cid"] = [self._ids[t] for t in STEP_TOPICS]
-            mi["e"]["o"] = size * np.arange(n, dtype="<u8")[None, :] + self._step_offsets[:, None]
-            self._mi_cache[n] = mi
-        mi["e"]["t"] = t_ns[None, :]
-        for name in STEP_TOPICS:
-            self._counts[name] += n
-        raw = rows.data
-        data = self._compress(raw) if self._compress else bytes(raw)
-        t_lo, t_hi = int(t_ns[0]), int(t_ns[-1])
-        comp = self.compression.encode()
-        body = (struct.pack("<QQQI", t_lo, t_hi, rows.size, zlib.crc32(raw)) + struct.pack("<I", len(comp))
-                + comp + struct.pack("<Q", len(data)))
-        chunk_start = self._pos
-        mi_start = chunk_start + 9 + len(body) + len(data)
-        self._write(struct.pack("<BQ", Opcode.CHUNK, len(body) + len(data)) + body + data + mi.tobytes())
-        rec_len = 15 + 16 * n
-        offsets = b"".join(struct.pack("<HQ", self._ids[t], mi_start + j * rec_len) for j, t in enumerate(STEP_TOPICS))
-        ci = (struct.pack("<QQQQI", t_lo, t_hi, chunk_start, mi_start - chunk_start, len(offsets)) + offsets
-              + struct.pack("<QI", len(STEP_TOPICS) * rec_len, len(comp)) + comp
-              + struct.pack("<QQ", len(data), rows.size))
-        self._chunk_indexes.append(struct.pack("<BQ", Opcode.CHUNK_INDEX, len(ci)) + ci)
-        self._t_range = [t_lo if self._t_range[0] is None else min(self._t_range[0], t_lo),
-                         t_hi if self._t_range[1] is None else max(self._t_range[1], t_hi)]
-        self._f.flush()
-
-    def _write_chunk(self, recs: list) -> None:
-        """One chunk holding ``recs`` = [(topic, log times (n,), records (n, size) array or list of bytes)],
-        then its message indexes; flushed."""
-        parts, index_recs, offset = [], [], 0
-        t_lo = min(int(t[0]) for _, t, _ in recs)     # times are in order within each group
-        t_hi = max(int(t[-1]) for _, t, _ in recs)
-        for topic, times, rec in recs:
-            n = len(times)
-            if isinstance(rec, list):                  # a few events
-                sizes = np.array([len(r) for r in rec])
-                parts.append(b"".join(rec))
-                idx = np.empty((n, 2), "<u8")
-                idx[:, 0] = times
-                idx[:, 1] = offset + np.concatenate([[0], np.cumsum(sizes)[:-1]])
-                index_recs.append((self._ids[topic], idx))
-                self._counts[topic] += n
-                offset += int(sizes.sum())
-                continue
-            parts.append(rec.tobytes())                # the step topics: one row of records per step
-            idx = np.empty((len(topic), n, 2), "<u8")
-            idx[:, :, 0] = times
-            idx[:, :, 1] = (offset + rec.shape[1] * np.arange(n, dtype="<u8"))[None, :] + self._step_offsets[:, None]
-            for j, name in enumerate(topic):
-                index_recs.append((self._ids[name], idx[j]))
-                self._counts[name] += n
-            offset += rec.size
-        records = b"".join(parts)
-        data = self._compress(records) if self._compress else records
-        comp = self.compression.encode()
-        body = (struct.pack("<QQQI", t_lo, t_hi, len(records), zlib.crc32(records)) + struct.pack("<I", len(comp))
-                + comp + struct.pack("<Q", len(data)))
-        chunk_start = self._pos
-        out = [struct.pack("<BQ", Opcode.CHUNK, len(body) + len(data)), body, data]
-        mi_offsets, mi_start = {}, chunk_start + 9 + len(body) + len(data)
-        pos = mi_start
-        for cid, idx in index_recs:
-            nb = 16 * len(idx)
-            mi_offsets[cid] = pos
-            out.append(struct.pack("<BQHI", Opcode.MESSAGE_INDEX, 6 + nb, cid, nb))
-            out.append(idx.tobytes())
-            pos += 15 + nb
-        self._write(b"".join(out))
-        offsets = b"".join(struct.pack("<HQ", cid, off) for cid, off in mi_offsets.items())
-        ci = (struct.pack("<QQQQI", t_lo, t_hi, chunk_start, mi_start - chunk_start, len(offsets)) + offsets
-              + struct.pack("<QI", pos - mi_start, len(comp)) + comp + struct.pack("<QQ", len(data), len(records)))
-        self._chunk_indexes.append(struct.pack("<BQ", Opcode.CHUNK_INDEX, len(ci)) + ci)
-        self._t_range = [t_lo if self._t_range[0] is None else min(self._t_range[0], t_lo),
-                         t_hi if self._t_range[1] is None else max(self._t_range[1], t_hi)]
-        self._f.flush()
+            m.timestamp.seconds, m.timestamp.nanos = divmod(t, NS)
+            self._writer.add_message(cid, t, m.SerializeToString(), t, self._seq)
 
     def _close(self) -> None:
-        b = RecordBuilder()
-        DataEnd(data_section_crc=0).write(b)
-        self._write(b.end())
-        summary_start = self._pos
-        groups = []
-
-        def group(opcode, records):
-            if not records:
-                return
-            start = self._pos
-            if isinstance(records[0], bytes):          # chunk indexes, serialised as they were written
-                self._write(b"".join(records))
-            else:
-                for r in records:
-                    r.write(b)
-                self._write(b.end())
-            groups.append(SummaryOffset(group_opcode=opcode, group_start=start, group_length=self._pos - start))
-
-        group(Opcode.SCHEMA, self._schemas)
-        group(Opcode.CHANNEL, self._channels)
-        group(Opcode.STATISTICS, [Statistics(
-            message_count=sum(self._counts.values()), schema_count=len(self._schemas),
-            channel_count=len(self._channels), attachment_count=0, metadata_count=len(self._meta_indexes),
-            chunk_count=len(self._chunk_indexes), message_start_time=self._t_range[0] or 0,
-            message_end_time=self._t_range[1] or 0,
-            channel_message_counts={self._ids[t]: n for t, n in self._counts.items()})])
-        group(Opcode.METADATA_INDEX, self._meta_indexes)
-        group(Opcode.CHUNK_INDEX, self._chunk_indexes)
-        offset_start = self._pos
-        for g in groups:
-            g.write(b)
-        Footer(summary_start=summary_start, summary_offset_start=offset_start, summary_crc=0).write(b)
-        self._write(b.end())
-        self._write(MAGIC)
+        self._writer.finish()
         self._f.close()
-        self._f = None
+        self._writer = self._f = None
 
 
 def run_metadata(info) -> dict:

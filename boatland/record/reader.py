@@ -1,8 +1,13 @@
 """Reading a boatland run log (MCAP) back: columns, events, metadata — recovering a truncated file.
 
-The file is read linearly (records in order), so a log whose writer was killed reads up to its last
-complete chunk; :attr:`RunLog.notes` then says what is missing. Files that are not MCAP, or MCAP files
-written by another program, raise :class:`~boatland.errors.BoatlandInputError` with one line.
+The file is read linearly (records in order, chunk and data-section CRCs checked), so a log whose
+writer was killed reads up to its last complete chunk; :attr:`RunLog.notes` then says what is missing.
+Files that are not MCAP, or MCAP files written by another program, raise
+:class:`~boatland.errors.BoatlandInputError` with one line.
+
+Both log formats are read (:data:`~boatland.record.schemas.LOG_FORMAT`): 2 (angles in degrees, log
+times from the run's wall-clock start ``start_time_ns``) and 1 (radians, log time = simulated time);
+:class:`RunLog` holds SI units (radians) and simulated times either way.
 """
 
 from __future__ import annotations
@@ -15,11 +20,14 @@ import numpy as np
 
 from boatland.errors import BoatlandInputError
 from boatland.record.columns import Columns
-from boatland.record.schemas import CONTACT_FIELDS, LOG_LEVEL, TOPICS, VESSEL_LOADS_FIELDS, VESSEL_STATE_FIELDS, message_class
+from boatland.record.schemas import ANGLE_FIELDS, CONTACT_FIELDS, LOG_LEVEL, RAD2DEG, TOPICS, VESSEL_LOADS_FIELDS, \
+    VESSEL_STATE_FIELDS, message_class
 
 __all__ = ["RunLog", "read_run_log"]
 
 MAGIC = b"\x89MCAP0\r\n"
+#: Channels every log has (format 1 on); format 2 adds ``/scene`` and ``/fender/forces`` for Foxglove.
+REQUIRED = ("/tf", "/events", "/vessel/state", "/vessel/loads", "/fender/state")
 _LEVEL_NAME = {v: k for k, v in LOG_LEVEL.items()}
 
 
@@ -34,7 +42,8 @@ class RunLog:
         Every complete step in the file.
     events : list of (t [s], level, text)
     metadata : dict
-        The ``boatland.run`` record (scenario document, version, seed, dt, start pose, geometry).
+        The ``boatland.run`` record (scenario document, version, seed, dt, start pose, geometry, log
+        format, start time).
     summary : dict or None
         ``Result.summary()`` when the run finished writing its log.
     complete : bool
@@ -72,7 +81,7 @@ def _records(path: Path):
     from zstandard import ZstdError as zstd_error
 
     with open(path, "rb") as f:
-        reader = StreamReader(f, skip_magic=False, emit_chunks=False)
+        reader = StreamReader(f, skip_magic=False, emit_chunks=False, validate_crcs=True)
         try:
             for rec in reader.records:
                 yield rec, None
@@ -129,11 +138,15 @@ def read_run_log(path: str | Path) -> RunLog:
                                  f"{', '.join(sorted(c.topic for c in channels.values())) or 'none'})")
     by_topic = {c.topic: data.get(cid, []) for cid, c in channels.items()
                 if c.topic in TOPICS and schemas.get(c.schema_id) and schemas[c.schema_id].name == TOPICS[c.topic]}
-    missing = [t for t in TOPICS if t not in by_topic]
+    missing = [t for t in REQUIRED if t not in by_topic]
+    if missing and not complete and not channels:
+        raise BoatlandInputError(f"{path}: truncated before the first complete block: nothing to recover")
     if missing:
         raise BoatlandInputError(f"{path}: a boatland log without the channels {', '.join(missing)}")
     run = meta["boatland.run"]
-    columns = _columns(by_topic, int(run.get("n_contacts", 0)))
+    fmt = int(run.get("log_format", 1))
+    epoch = int(run.get("start_time_ns", 0)) if fmt >= 2 else 0
+    columns = _columns(by_topic, int(run.get("n_contacts", 0)), degrees=fmt >= 2)
     notes = []
     if not complete:
         why = ": no summary or footer"
@@ -149,7 +162,7 @@ def read_run_log(path: str | Path) -> RunLog:
     Log = message_class("foxglove.Log")
     for t_ns, raw in by_topic["/events"]:
         m = Log.FromString(raw)
-        events.append((t_ns / 1e9, _LEVEL_NAME.get(m.level, "UNKNOWN"), m.message))
+        events.append(((t_ns - epoch) / 1e9, _LEVEL_NAME.get(m.level, "UNKNOWN"), m.message))
     summary = json.loads(meta["boatland.summary"]["summary"]) if "boatland.summary" in meta else None
     return RunLog(path=path, columns=columns, events=events, metadata=run, summary=summary, complete=complete,
                   notes=notes)
@@ -170,9 +183,12 @@ def _doubles(rows: list, cls_name: str, names: tuple) -> np.ndarray:
     return np.array([[getattr(m, f) for f in names] for m in (cls.FromString(r) for _, r in rows)]).reshape(n, k)
 
 
-def _columns(by_topic: dict, nc: int) -> Columns:
+def _columns(by_topic: dict, nc: int, degrees: bool) -> Columns:
+    """The steps as :class:`Columns` (SI: angles back in radians when ``degrees``)."""
     n = min(len(by_topic[t]) for t in ("/tf", "/vessel/state", "/vessel/loads", "/fender/state"))
     st = _doubles(by_topic["/vessel/state"][:n], "boatland.VesselState", VESSEL_STATE_FIELDS)
+    if degrees:
+        st[:, ANGLE_FIELDS] /= RAD2DEG            # the writer's x · RAD2DEG undone to ≤ 1 ulp
     ld = _doubles(by_topic["/vessel/loads"][:n], "boatland.VesselLoads", VESSEL_LOADS_FIELDS)
     TF = message_class("foxglove.FrameTransform")
     FS = message_class("boatland.FenderState")

@@ -52,7 +52,7 @@ def replay(path: str | Path, target: str, *, quiet: bool = False, bind: str = DE
     nc = log.columns.mode.shape[1]
     scene = scene_from_metadata(log.metadata)
     rec, kind, where = open_stream(target, recording_id=log.metadata.get("run_id") or None, n_contacts=nc, quiet=quiet,
-                                   bind=bind, port=port)
+                                   bind=bind, port=port, scene=scene)
     view = RerunView(rec, scene, nc)
     view.static()
     view.columns(log.columns)

@@ -24,16 +24,16 @@ import numpy as np
 from boatland.errors import BoatlandInputError
 from boatland.record.columns import BowElevation, Columns, LandingTracker, settle_row
 from boatland.record.mcap_log import IncidentWatch, columns_from_block, end_event, step_events
-from boatland.record.scene import PATCH_DT, Scene, scene_from_trial
+from boatland.record.scene import COLORS, FENDER_RADIUS, FORCE_SCALE, MODE_COLORS, PATCH_DT, PILE_BOTTOM, PILE_TOP, \
+    Scene, fender_forces, scene_from_trial
 
 __all__ = ["RerunView", "RerunLog", "parse_target", "open_stream", "check_target", "blueprint", "serve_until_interrupted", "APPLICATION_ID", "TIMELINE"]
 
 APPLICATION_ID = "boatland"
 TIMELINE = "sim_time"
 DEFAULT_URL = "rerun+http://127.0.0.1:9876/proxy"
-MODE_COLORS = np.array([[150, 150, 150, 255], [40, 190, 60, 255], [230, 40, 40, 255],
-                        [120, 0, 160, 255]], np.uint8)  # open, stick, slip, off the landing
 FLUSH_EVERY = 30.0     # [s] of simulated time buffered between sends of the live stream
+FENDER_POINT_RADIUS = 0.35   # [m] drawn radius of the contact points, coloured by the contact's state
 
 
 DEFAULT_BIND, DEFAULT_PORT = "127.0.0.1", 9876
@@ -109,19 +109,29 @@ def _check_viewer(url: str) -> None:
                                  "or use --rerun serve / --rerun save=FILE.rrd)") from None
 
 
-def blueprint(n_contacts: int = 0):
-    """The default layout: 3D scene left; motions, fender forces, slip distance, events right."""
+def blueprint(n_contacts: int = 0, scene: Scene | None = None):
+    """The default layout: the 3D scene left, looking at the bow and the landing (``scene.camera()``);
+    right, time series — heave and the wave at the bow; roll and pitch; fender forces; thrust; slip
+    distance — and the events."""
     import rerun.blueprint as rrb
 
+    eye = None
+    if scene is not None:
+        position, target = scene.camera()
+        eye = rrb.EyeControls3D(position=position, look_target=target, eye_up=[0.0, 0.0, 1.0])
+    plots = lambda name, *paths: rrb.TimeSeriesView(origin="/plots", contents=list(paths), name=name)  # noqa: E731
     return rrb.Blueprint(
         rrb.Horizontal(
-            rrb.Spatial3DView(origin="/world", name="Landing"),
+            rrb.Spatial3DView(origin="/world", name="Landing", eye_controls=eye, line_grid=rrb.LineGrid3D(visible=False),
+                              background=rrb.Background(kind="SolidColor", color=COLORS["sky"])),
             rrb.Vertical(
-                rrb.TimeSeriesView(origin="/plots/motion", name="Motions (heave m; roll, pitch deg)"),
-                rrb.TimeSeriesView(origin="/plots/fender", name="Fender forces vs available friction [kN]"),
-                rrb.TimeSeriesView(origin="/plots/slip", name="Slip distance from landing [m]"),
+                plots("Heave and wave at the bow [m]", "/plots/motion/heave", "/plots/sea/bow_elevation"),
+                plots("Roll, pitch [deg]", "/plots/motion/roll", "/plots/motion/pitch"),
+                plots("Fender forces vs available friction [kN]", "/plots/fender/**"),
+                plots("Thrust [kN]", "/plots/loads/thrust"),
+                plots("Slip distance from landing [m]", "/plots/slip/**"),
                 rrb.TextLogView(origin="/events", name="Events"),
-                row_shares=[2, 2, 1.5, 1]),
+                row_shares=[2, 1.5, 2, 1, 1.5, 1.2]),
             column_shares=[3, 2]),
         collapse_panels=True)
 
@@ -153,8 +163,9 @@ def check_target(target: str, *, bind: str = DEFAULT_BIND, port: int = DEFAULT_P
 
 
 def open_stream(target: str, *, recording_id: str | None = None, n_contacts: int = 0, quiet: bool = False,
-                bind: str = DEFAULT_BIND, port: int = DEFAULT_PORT):
-    """A RecordingStream sending to ``target`` (checked with :func:`check_target`), with the default layout.
+                bind: str = DEFAULT_BIND, port: int = DEFAULT_PORT, scene: Scene | None = None):
+    """A RecordingStream sending to ``target`` (checked with :func:`check_target`), with the default layout
+    (its camera on ``scene``'s bow and landing).
 
     ``bind``, ``port``: where a ``serve`` target listens (default 127.0.0.1:9876: this machine only).
 
@@ -163,7 +174,7 @@ def open_stream(target: str, *, recording_id: str | None = None, n_contacts: int
 
     kind, arg = check_target(target, bind=bind, port=port)
     rec = rr.RecordingStream(APPLICATION_ID, recording_id=recording_id or str(uuid.uuid4()))
-    bp = blueprint(n_contacts)
+    bp = blueprint(n_contacts, scene)
     where = arg
     if kind == "save":
         rec.save(arg, default_blueprint=bp)
@@ -196,33 +207,41 @@ class RerunView:
         self._sea_next = 0.0
 
     def static(self) -> None:
+        """The scene: hull (antifouling below the waterline, light topsides), monopile, landing tubes from
+        their bottom to their top, fender lines, the sea's triangles; the plots' names."""
         import rerun as rr
 
         rec, sc = self.rec, self.scene
         rec.log("/world", rr.ViewCoordinates.RIGHT_HAND_Z_UP, static=True)
+        solid = rr.components.FillMode.Solid
         mx, my, md = sc.monopile
         if md > 0:
-            rec.log("/world/monopile", rr.Cylinders3D(lengths=[PILE_LEN], radii=[md / 2],
-                                                      centers=[[mx, my, PILE_MID]], colors=[[230, 200, 40]]),
-                    static=True)
+            rec.log("/world/monopile", rr.Cylinders3D(
+                lengths=[PILE_TOP - PILE_BOTTOM], radii=[md / 2], centers=[[mx, my, 0.5 * (PILE_TOP + PILE_BOTTOM)]],
+                colors=[COLORS["monopile"]], fill_mode=solid), static=True)
         if sc.struts:
             s = np.asarray(sc.struts, float)
             rec.log("/world/landing/struts", rr.Cylinders3D(
-                lengths=np.full(len(s), PILE_LEN), radii=s[:, 2] / 2,
-                centers=np.column_stack([s[:, 0], s[:, 1], np.full(len(s), PILE_MID)]), colors=[[240, 240, 240]]),
-                static=True)
+                lengths=s[:, 4] - s[:, 3], radii=s[:, 2] / 2,
+                centers=np.column_stack([s[:, 0], s[:, 1], 0.5 * (s[:, 3] + s[:, 4])]), colors=[COLORS["tube"]],
+                fill_mode=solid), static=True)
         rec.log("/world/vessel/hull", rr.Mesh3D(vertex_positions=sc.hull_vertices, triangle_indices=sc.hull_triangles,
-                                                albedo_factor=[70, 110, 170, 255]), static=True)
+                                                vertex_colors=sc.hull_colors), static=True)
         if len(sc.fender_points):
-            rec.log("/world/vessel/fender", rr.Points3D(sc.fender_points, radii=0.25,
-                                                        colors=MODE_COLORS[np.zeros(len(sc.fender_points), int)]),
-                    static=True)
+            rec.log("/world/vessel/fender_line", rr.LineStrips3D(sc.fender_lines, radii=FENDER_RADIUS,
+                                                                 colors=[COLORS["fender"]]), static=True)
+            # positions and radii static; the colours are temporal (static data would shadow them)
+            rec.log("/world/vessel/fender", rr.Points3D.from_fields(positions=sc.fender_points,
+                                                                    radii=FENDER_POINT_RADIUS), static=True)
         if sc.components is not None:
             X, Y, tri = sc.patch_grid()
-            rec.log("/world/sea", rr.Mesh3D(vertex_positions=np.column_stack([X, Y, np.zeros_like(X)]),
-                                            triangle_indices=tri, albedo_factor=[40, 120, 200, 120]), static=True)
+            # the triangles and colour static; the vertices are temporal (:meth:`_sea`): static data
+            # would shadow them
+            rec.log("/world/sea", rr.Mesh3D.from_fields(triangle_indices=tri, albedo_factor=COLORS["sea"]),
+                    static=True)
         styles = {"/plots/motion/heave": "heave [m]", "/plots/motion/roll": "roll [deg]",
-                  "/plots/motion/pitch": "pitch [deg]"}
+                  "/plots/motion/pitch": "pitch [deg]", "/plots/loads/thrust": "thrust [kN]",
+                  "/plots/sea/bow_elevation": "wave at the bow [m]"}
         for k in range(self.nc):
             for name in ("normal", "friction", "needed", "available"):
                 styles[f"/plots/fender/{k}/{name}"] = f"contact {k} {name}"
@@ -253,10 +272,28 @@ class RerunView:
         send("/plots/loads/thrust", c.thrust / 1e3)
         send("/plots/sea/bow_elevation", c.eta_bow)
         if self.nc:
+            colors = MODE_COLORS[c.mode.ravel()]
             rr.send_columns("/world/vessel/fender", indexes=idx, recording=rec,
-                            columns=rr.Points3D.columns(colors=MODE_COLORS[c.mode.ravel()]).partition(
-                                np.full(len(c), self.nc)))
+                            columns=rr.Points3D.columns(colors=colors).partition(np.full(len(c), self.nc)))
+            self._arrows(c, idx, colors)
         self._sea(float(c.t[-1]))
+
+    def _arrows(self, c: Columns, idx, colors) -> None:
+        """The fender forces on the vessel, per step: from each contact point its normal force and its
+        friction, 1 m per 10 kN (:data:`~boatland.record.scene.FORCE_SCALE`), coloured by the contact's state."""
+        import rerun as rr
+
+        origin, normal, friction = fender_forces(self.scene, c.x, c.fn, c.ft)
+        n = len(c)
+        vec = np.stack([normal, friction], axis=2).reshape(n, -1, 3) * FORCE_SCALE
+        org = np.repeat(origin, 2, axis=1)
+        col = np.repeat(colors.reshape(n, self.nc, 4), 2, axis=1)
+        radii = np.tile([0.09, 0.06], (n, self.nc))                    # friction arrows thinner
+        m = 2 * self.nc
+        rr.send_columns("/world/fender_forces", indexes=idx, recording=self.rec,
+                        columns=rr.Arrows3D.columns(vectors=vec.reshape(-1, 3), origins=org.reshape(-1, 3),
+                                                    colors=col.reshape(-1, 4), radii=radii.ravel())
+                        .partition(np.full(n, m)))
 
     def _sea(self, t_last: float) -> None:
         """Sea-patch frames on the grid k·PATCH_DT up to ``t_last``."""
@@ -290,10 +327,6 @@ class RerunView:
                                                    level=[{"WARNING": "WARN"}.get(e[1], e[1]) for e in events]))
 
 
-PILE_LEN = 32.0   # [m] drawn length of the monopile and struts, from z = -20 to 12 m
-PILE_MID = -4.0
-
-
 class RerunLog:
     """Streams a running trial to Rerun (implements :class:`~boatland.trial.sink.TrialSink`).
 
@@ -317,9 +350,10 @@ class RerunLog:
     def start(self, info) -> None:
         self.info = info
         nc = np.asarray(info.contacts[0]).reshape(-1, 3).shape[0]
+        scene = scene_from_trial(info.scenario, info.db, info.start_pose, info.contacts)
         self.rec, self.kind, self.where = open_stream(self.target, recording_id=self.recording_id, n_contacts=nc,
-                                                      quiet=self.quiet, bind=self.bind, port=self.port)
-        self.view = RerunView(self.rec, scene_from_trial(info.scenario, info.db, info.start_pose, info.contacts), nc)
+                                                      quiet=self.quiet, bind=self.bind, port=self.port, scene=scene)
+        self.view = RerunView(self.rec, scene, nc)
         self.view.static()
         self._tracker, self._incidents = LandingTracker(nc, settle_row(info)), IncidentWatch(info.scenario)
         self._eta = BowElevation(info)
