@@ -29,7 +29,7 @@ import numpy as np
 
 from boatland.validation.case import Case, Check, Context, Outcome
 
-__all__ = ["write_campaign", "run_study", "hs_at_probability", "p_incident", "mean_first_time", "TRENDS_SET",
+__all__ = ["write_campaign", "run_study", "hs_at_probability", "screening_probability", "p_incident", "mean_first_time", "TRENDS_SET",
            "fd_vs_td_campaign", "CASES"]
 
 
@@ -90,20 +90,25 @@ def mean_first_time(c, table, name: str, access: float) -> dict:
     return {tuple(case.values.values()): float(t[table["case"] == case.index].mean()) for case in c.cases}
 
 
-def hs_at_probability(scenario, db, p: float, *, access: float, Tp: float, heading: float,
-                      step: float = 0.005) -> float:
-    """The H_s [m] (rounded to ``step``) at which the frequency-domain screening of ``scenario`` (its
-    landing, fender, thrust and spectrum shape) gives probability ``p`` of an incident per access of
-    ``access`` s at peak period ``Tp`` and relative heading ``heading`` (Wu 2014; Grøtting 2015 eq. 3.38)."""
-    from scipy.optimize import brentq
-
+def screening_probability(scenario, db, hs: float, *, access: float, Tp: float, heading: float) -> float:
+    """The frequency-domain screening's probability of an incident per access of ``access`` s for
+    ``scenario`` (its landing, fender, thrust and spectrum shape) at H_s ``hs``, peak period ``Tp`` and
+    relative heading ``heading`` (Wu 2014; Grøtting 2015 eq. 3.38) — what a campaign stores beside its cases."""
     from boatland.freqdomain.screening import LandingSetup, sea_response
 
+    s = scenario.replace({"sea.Hs": hs, "sea.Tp": Tp, "sea.relative_direction_deg": heading})
+    setup = LandingSetup.from_scenario(s, db)
+    return sea_response(db, setup, s.sea.waves.parts, access_duration=access,
+                        water_depth=getattr(s.wave_model(db), "water_depth", None)).p_access
+
+
+def hs_at_probability(scenario, db, p: float, *, access: float, Tp: float, heading: float,
+                      step: float = 0.005) -> float:
+    """The H_s [m] (rounded to ``step``) at which :func:`screening_probability` is ``p``."""
+    from scipy.optimize import brentq
+
     def prob(hs):
-        s = scenario.replace({"sea.Hs": hs, "sea.Tp": Tp, "sea.relative_direction_deg": heading})
-        setup = LandingSetup.from_scenario(s, db)
-        return sea_response(db, setup, s.sea.waves.parts, access_duration=access,
-                            water_depth=getattr(s.wave_model(db), "water_depth", None)).p_access
+        return screening_probability(scenario, db, hs, access=access, Tp=Tp, heading=heading)
 
     lo, hi = 0.01, 0.05
     while prob(hi) < p:
@@ -296,13 +301,15 @@ def run_fd_vs_td(ctx: Context) -> Outcome:
             checks.append(Check(f"{d:g}°, H_s {h:g} m: screening P(slip in 30 min) inside the time domain's "
                                 "95 % interval", f"TD {k}/{seeds} [{lo:.2f}, {hi:.2f}], screening {fd:.3f}",
                                 "inside", ok, fd, None))
-    fig, ax = plt.subplots(figsize=(7, 4), constrained_layout=True)
+    fig, ax = plt.subplots(figsize=(7.5, 4), constrained_layout=True)
     for i, d in enumerate(headings):
         sel = [r for r in rows if r[0] == d]
         x = np.array([r[1] for r in sel])
+        grid = np.linspace(0.6 * x.min(), 1.4 * x.max(), 15)
+        ax.plot(grid, [screening_probability(scenario, db, h, access=FD_TD_ACCESS, Tp=FD_TD_TP, heading=d)
+                       for h in grid], "-", color=f"C{i}", lw=1, label=f"{d:g}°: screening")
         ax.errorbar(x, [r[3] for r in sel], yerr=[[r[3] - r[4] for r in sel], [r[5] - r[3] for r in sel]], fmt="o",
                     color=f"C{i}", capsize=3, label=f"{d:g}°: time domain, 95 % interval")
-        ax.plot(x, [r[6] for r in sel], "x", ms=10, mew=2, color=f"C{i}", label=f"{d:g}°: screening")
     ax.set_xlabel("H_s [m]")
     ax.set_ylabel("P(first slip within a 30-min access)")
     ax.set_ylim(-0.02, 1.02)

@@ -171,22 +171,31 @@ def run_hinge(ctx: Context) -> Outcome:
                                         "(period × force component)", ea, AMPLITUDE_TOL, digits=3))
             checks.append(Check.below(f"{seas} seas, {label}: phase [deg]", ep, PHASE_TOL_DEG, "{:.2f}", "°"))
     fig, ax = plt.subplots(1, 2, figsize=(11, 3.8), constrained_layout=True)
-    markers = {(0,): "o", (1,): "s", (2,): "^"}
-    for i, seas in enumerate(("head", "bow-quartering 150°")):
-        for shear, fill in zip(SHEARS, ("full", "none")):
-            for comp in (0, 1, 2):
-                sel = [r for r in rows if r[0] == seas and r[1] == shear and r[3] == comp]
-                if not sel:
-                    continue
-                T = [r[2] for r in sel]
-                line, = ax[i].plot(T, [abs(r[7]) / 1e3 for r in sel], "-", lw=1, color=f"C{comp}")
-                ax[i].plot(T, [abs(r[6]) / 1e3 for r in sel], markers[(comp,)], color=f"C{comp}", fillstyle=fill,
-                           label=f"{names[comp]}, {'rigid' if shear == 'rigid' else 'rubber'} (TD)")
-        ax[i].set_title(f"{seas} seas, H = {H:g} m: lines frequency domain, markers time domain")
-        ax[i].set_xlabel("wave period T [s]")
-        ax[i].set_ylabel("first-harmonic amplitude [kN]")
-        ax[i].grid(alpha=0.3)
-        ax[i].legend(fontsize=7)
+    shift = {("head", "rigid"): -0.15, ("head", 3.0e6): -0.05, ("bow-quartering 150°", "rigid"): 0.05,
+             ("bow-quartering 150°", 3.0e6): 0.15}
+    marker = {0: "o", 1: "s", 2: "^"}
+    for seas, shear, T, comp, e, p, _, _ in rows:
+        kw = dict(marker=marker[comp], color="C0" if seas == "head" else "C3",
+                  fillstyle="full" if shear == "rigid" else "none", ls="none")
+        ax[0].plot(T + shift[(seas, shear)], 100 * e, **kw)
+        ax[1].plot(T + shift[(seas, shear)], p, **kw)
+    for comp in (0, 1, 2):
+        ax[0].plot([], [], marker=marker[comp], color="0.4", ls="none", label=names[comp])
+    ax[0].plot([], [], "s", color="C0", label="head seas")
+    ax[0].plot([], [], "s", color="C3", label="bow-quartering 150°")
+    ax[0].plot([], [], "s", color="0.4", fillstyle="none", label="open: rubber k_t 3 MN/m; filled: rigid stick")
+    for a, tol, unit in ((ax[0], 100 * AMPLITUDE_TOL, "amplitude: |TD| / |FD| − 1 [%]"),
+                         (ax[1], PHASE_TOL_DEG, "phase: arg(TD / FD) [deg]")):
+        a.axhspan(-tol, tol, color="0.92", zorder=0, label="tolerance")
+        a.axhline(0, color="0.5", lw=0.8)
+        a.set_ylim(-1.6 * tol, 1.6 * tol)
+        a.set_xticks(periods)
+        a.set_xlim(min(periods) - 0.8, max(periods) + 0.8)
+        a.set_xlabel("wave period T [s]")
+        a.set_ylabel(unit)
+        a.grid(alpha=0.3)
+    ax[0].legend(fontsize=7, ncol=2, loc="lower left")
+    fig.suptitle(f"Stuck fender force, time domain (TD) vs frequency-domain hinge reaction (FD); ctv24, H = {H:g} m")
     name = ctx.save(fig, "hinge_reaction.png")
     worst_a = max(abs(r[4]) for r in rows)
     worst_p = max(abs(r[5]) for r in rows)
