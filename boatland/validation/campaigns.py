@@ -21,7 +21,6 @@ mean time to the first incident by maximum likelihood with censoring (Grøtting 
 from __future__ import annotations
 
 import json
-import math
 import warnings
 from pathlib import Path
 
@@ -154,6 +153,7 @@ TRENDS_SET = {"radiation.method": "state_space"}
 
 
 def run_trends(ctx: Context) -> Outcome:
+    """Case grotting-trends: heading (and, full, period, H_s and thrust) trends of the default landing."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -185,15 +185,22 @@ def run_trends(ctx: Context) -> Outcome:
         f = write_campaign(ctx.work / "period.toml", "period", path,
                            axes={"sea.Hs": [hs], "sea.Tp": list(PERIODS), "sea.relative_direction_deg": [180.0]},
                            **common)
-        c, t, _ = run_study(f, ctx.work / "period.h5", workers=ctx.workers, progress=_printer(ctx, "periods"))
+        c, t, st = run_study(f, ctx.work / "period.h5", workers=ctx.workers, progress=_printer(ctx, "periods"))
         m_p = {k[1]: v for k, v in mean_first_time(c, t, "first slip", access).items()}
         p_p = {k[1]: v for k, v in p_incident(c, t, "first slip").items()}
+        mle = {case.values["sea.Tp"]: float(st[case.index]["first slip: mean time"]) for case in c.cases}
         ms = [m_p[T] for T in PERIODS]
         checks.append(Check(f"Table 4.11: head seas at constant H_s ({hs:g} m): the first slip comes later at longer "
                             f"Tp — mean time at Tp {', '.join(f'{T:g}' for T in PERIODS)} s, {seeds} seeds",
                             ", ".join(f"{m:.0f} s" for m in ms) + " (P " + ", ".join(f"{p_p[T]:.2f}" for T in PERIODS)
                             + ")", "non-decreasing, last > first",
                             bool(ms == sorted(ms) and ms[-1] > ms[0])))
+        notes.append(f"Periods (Table 4.11), other statistics of the same trials, for the reader (not judged): "
+                     f"P(first slip within {access:g} s) " + ", ".join(f"{p_p[T]:.2f}" for T in PERIODS)
+                     + "; the mean time to the first slip by maximum likelihood with censoring (Grøtting 2015 §3.3, "
+                     "the campaign's `first slip: mean time`) " + ", ".join(f"{mle[T]:.0f} s" for T in PERIODS)
+                     + f" at Tp {', '.join(f'{T:g}' for T in PERIODS)} s. The judged mean counts a trial without a "
+                     f"slip at {access:g} s, as Grøtting's Tables 4.10–4.11 count one at 10 000 s.")
         thrust = scenario.thrust.force
         hs_values = [round(hs * k / 0.005) * 0.005 for k in HS_FACTORS]
         f = write_campaign(ctx.work / "hs_thrust.toml", "hs_thrust", path,
@@ -235,10 +242,14 @@ def run_trends(ctx: Context) -> Outcome:
     ax0b.set_ylabel("Grøtting (2015) [s]")
     ax0b.legend(fontsize=7, loc="upper right")
     if m_p is not None:
-        ax[1].plot(PERIODS, [m_p[T] for T in PERIODS], "o-", label=f"boatland, H_s {hs:g} m, head seas")
+        ax[1].plot(PERIODS, [m_p[T] for T in PERIODS], "o-", label=f"boatland, H_s {hs:g} m, head seas (no slip = {access:g} s)")
+        ax[1].plot(PERIODS, [mle[T] if np.isfinite(mle[T]) else np.nan for T in PERIODS], "o:", color="C0",
+                   fillstyle="none", label="boatland, censored maximum likelihood")
         ax1b = ax[1].twinx()
         ax1b.plot(PERIODS, [259, 1500, 4310], "ks--", label="Grøtting Table 4.11 (his vessel, H_s 2 m)")
         ax1b.set_ylabel("Grøtting (2015) [s]")
+        ax1b.set_ylim(bottom=0)
+        ax[1].set_ylim(bottom=0)
         ax1b.legend(fontsize=7, loc="lower right")
         ax[1].legend(fontsize=7, loc="upper left")
         ax[1].set_xlabel("Tp [s]")
@@ -277,6 +288,7 @@ def fd_vs_td_campaign(folder: Path, heading: float, hs, *, seeds: int = 24, scen
 
 
 def run_fd_vs_td(ctx: Context) -> Outcome:
+    """Case screening-vs-monte-carlo: the screening's P inside the Monte Carlo's 95 % interval."""
     import matplotlib
 
     matplotlib.use("Agg")

@@ -194,7 +194,7 @@ class CaseResult:
         c, o = self.case, self.outcome
         return {
             "name": c.name, "title": c.title, "cite": c.cite, "reference": c.reference, "tolerance": c.tolerance,
-            "error_measure": c.error_measure, "verdict": self.verdict, "wall_time_s": round(self.seconds, 2),
+            "error_measure": c.error_measure, "verdict": self.verdict, "wall_time_s": round(self.seconds, 1),
             "headline": o.headline if o else self.error, "figure": o.figure if o else None,
             "settings": o.settings if o else "", "error": self.error,
             "checks": [{"what": k.what, "measured": k.measured, "tolerance": k.tolerance, "verdict": k.verdict,

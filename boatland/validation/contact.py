@@ -120,6 +120,7 @@ def rubber_ring(k_t=4.0e6, zeta=0.04, v0=0.1, dt=2e-4, duration=0.5):
 
 # --------------------------------------------------------------------------- case
 def run_contact(ctx: Context) -> Outcome:
+    """Case contact-analytic: impact, Coulomb stick–slip (rigid and rubber) and the stuck rubber in closed form."""
     import matplotlib
 
     matplotlib.use("Agg")

@@ -178,6 +178,7 @@ def _pyplot():
 
 
 def run_hulme(ctx: Context) -> Outcome:
+    """Case hulme-hemisphere: μ and λ of the WAMIT hemisphere against Hulme (1982), and A33(∞)."""
     table, db = hulme_table(ctx.refdata), bemio_sphere(ctx.refdata)
     c = hulme_comparison(db, table)
     kmu, mu_bem, mu_ref, e_mu = c["mu"]
@@ -216,6 +217,7 @@ def run_hulme(ctx: Context) -> Outcome:
 
 
 def run_codes(ctx: Context) -> Outcome:
+    """Case bem-codes: NEMOH and Capytaine against WAMIT (heave A33, B33, X3), and NEMOH's irregular frequency."""
     codes = read_codes(ctx.refdata)
     grid = band_grid(codes)
     checks = []
@@ -256,6 +258,7 @@ def run_codes(ctx: Context) -> Outcome:
 
 
 def run_irf(ctx: Context) -> Outcome:
+    """Case sphere-irf: boatland's K33(t) against BEMIO's, and the B/A round trip."""
     db, mem, t_ref, K_ref = irf_case(ctx.refdata)
     e = irf_errors(mem, t_ref, K_ref)
     checks = [Check.percent("K33(0) against the published IRF", e["K0"], IRF_K0_TOL),

@@ -132,6 +132,7 @@ def amplitude_phase(td, fd) -> tuple[float, float]:
 
 # --------------------------------------------------------------------------- case
 def run_hinge(ctx: Context) -> Outcome:
+    """Case hinge-reaction: stuck contact forces of ctv24 in regular waves against :func:`compare_hinge`'s FD side."""
     import matplotlib
 
     matplotlib.use("Agg")

@@ -100,6 +100,7 @@ def _pyplot():
 
 
 def run_raos(ctx: Context) -> Outcome:
+    """Case td-vs-fd-rao: steady regular-wave response of the free hemisphere against its RAO."""
     db, mem = hemisphere_with_mass(ctx.refdata)
     freqs = RAO_FREQUENCIES[::2] if ctx.quick else RAO_FREQUENCIES
     errs = np.zeros((len(freqs), 6))
@@ -144,6 +145,7 @@ def run_raos(ctx: Context) -> Outcome:
 
 
 def run_state_space(ctx: Context) -> Outcome:
+    """Case state-space-vs-convolution: free decays of the hemisphere and of ctv24 with both memories."""
     from boatland.hydro.builtin import load_builtin
     from boatland.model.radiation import radiation_memory
 

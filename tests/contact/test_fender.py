@@ -11,7 +11,7 @@ import pytest
 from boatland.contact.fender import OFF, OPEN, SLIP, STICK, contact_set, stribeck
 from boatland.integrate.cummins import STATUS_SLID_OFF
 # The block, the plate and the closed forms are boatland.validation.contact's (`boatland validate` runs them).
-from boatland.validation.contact import C_F, D_F, F0, MU, T_PUSH, W, block, coulomb_case, coulomb_times, plate, pushed
+from boatland.validation.contact import C_F, D_F, MU, T_PUSH, block, coulomb_case, coulomb_times, plate, pushed
 from boatland.validation.contact import BLOCK_MASS as m
 
 

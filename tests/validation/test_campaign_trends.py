@@ -9,7 +9,6 @@ only in beam seas (2/6; the rubber holds most slips to a few centimetres).
 
 from pathlib import Path
 
-import numpy as np
 import pytest
 
 from boatland.campaign.runner import completed
