@@ -18,7 +18,7 @@ __all__ = ["main"]
 
 #: Command modules in the order ``boatland --help`` lists them.
 COMMANDS = ("run", "replay", "plot", "campaign", "report", "scenario", "hydro", "irf", "rao", "screen",
-            "operability")
+            "operability", "validate")
 
 
 def main(argv: list[str] | None = None) -> int:

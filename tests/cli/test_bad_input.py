@@ -259,6 +259,10 @@ def _cases():
         ("operability access", ["operability", "x.toml", "scatter_text.csv", "--access", "inf"], "--access"),
         ("unknown command", ["fly"], "fly"),
         ("scenario check missing", ["scenario", "check", "nope.toml"], "nope.toml"),
+        ("validate unknown case", ["validate", "--case", "fly"], "--case fly"),
+        ("validate workers 0", ["validate", "--workers", "0"], "--workers"),
+        ("validate -o file", ["validate", "--case", "contact-analytic", "-o", "x.toml"], "-o x.toml"),
+        ("validate refdata missing", ["validate", "--case", "hulme-hemisphere", "--refdata", "nope"], "--refdata nope"),
     ]
     return out
 

@@ -7,38 +7,12 @@ import math
 
 import numpy as np
 import pytest
-from scipy.optimize import brentq
 
 from boatland.contact.fender import OFF, OPEN, SLIP, STICK, contact_set, stribeck
 from boatland.integrate.cummins import STATUS_SLID_OFF
-from boatland.model.motion import MotionArrays
-
-m = 1000.0
-T_PUSH = 2.0e4         # thrust along x [N] (the normal force when steady)
-C_F, D_F = 1.0e6, 6.0e4
-
-
-def block(C=None):
-    Mt = np.diag([m, m, m, 1e9, 1e9, 1e9])  # rotations frozen: a translating block
-    return MotionArrays.without_memory(Mt, np.zeros((6, 6)) if C is None else C)
-
-
-def plate(c_f=C_F, d_f=D_F, **law):
-    """Fender point at the reference point; a flat plate x = 0.5 with normal −x (the block comes from −x)."""
-    law.setdefault("mu_s", 0.0)
-    law.setdefault("mu_k", law["mu_s"])
-    return contact_set([[0.0, 0.0, 0.0]], [[0.5, 0.0]], math.inf, [[-1.0, 0.0]], stiffness=c_f, damping=d_f, **law)
-
-
-def pushed(dt, duration, F_t, contacts, x0=None):
-    """Block pressed on the plate by T_PUSH and loaded tangentially by F_t(t) = (Fy, Fz) at half steps."""
-    n = int(round(duration / dt))
-    t_half = np.arange(2 * n + 1) * dt / 2
-    F = np.zeros((2 * n + 1, 6))
-    Fy, Fz = F_t(t_half)
-    F[:, 1], F[:, 2] = Fy, Fz
-    x0 = [0.5 + T_PUSH / C_F, 0, 0, 0, 0, 0] if x0 is None else x0
-    return block().run(dt, n, F_ext=F, thrust=np.full(2 * n + 1, T_PUSH), x0=x0, contacts=contacts)
+# The block, the plate and the closed forms are boatland.validation.contact's (`boatland validate` runs them).
+from boatland.validation.contact import C_F, D_F, MU, T_PUSH, block, coulomb_case, coulomb_times, plate, pushed
+from boatland.validation.contact import BLOCK_MASS as m
 
 
 def test_stribeck_curve():
@@ -57,22 +31,6 @@ def test_mass_striking_a_linear_fender():
     assert duration == pytest.approx(np.pi * np.sqrt(m / c_f), abs=2 * dt)
     assert r["v"][-1, 0] == pytest.approx(-v0, rel=1e-4)
     assert r["fn"].min() >= 0.0 and r["mode"][-1, 0] == OPEN  # never pulling; open again
-
-
-MU, F0, W = 0.5, 1.5e4, 1.0
-
-
-def coulomb_case(dt, **law):
-    """Pressed by T (normal force T), loaded vertically by F0 sin ωt, μ_s = μ_k = μ."""
-    law.setdefault("mu_s", MU)
-    return pushed(dt, 12.0, lambda t: (0 * t, F0 * np.sin(W * t)), plate(**law))
-
-
-def coulomb_times():
-    """Closed form: stuck until F0 sin ωt = μT, then m z'' = F0 sin ωt − μT until z' = 0 again."""
-    t_s = np.arcsin(MU * T_PUSH / F0) / W
-    vel = lambda t: (F0 * (np.cos(W * t_s) - np.cos(W * t)) / W - MU * T_PUSH * (t - t_s)) / m  # noqa: E731
-    return t_s, brentq(vel, t_s + 0.1, t_s + np.pi / W * 1.9)
 
 
 @pytest.mark.parametrize("dt", [0.01, 0.002])

@@ -8,6 +8,7 @@ from boatland.irf.impulse import IRFSettings
 from boatland.model.hydrodb import rigid_body_mass_matrix
 from boatland.model.motion import MotionArrays, compile_motion
 from boatland.model.radiation import radiation_memory
+from boatland.validation.timedomain import CTV_X0, HEMISPHERE_X0, free_decays, rms_differences
 
 M, K_SPRING, B_LIN = 2.0e5, 8.0e5, 4.0e4     # heave oscillator: ω0 = 2 rad/s, ζ = 0.05
 
@@ -87,15 +88,11 @@ def test_hemisphere_decay_period_is_the_database_natural_period(hemisphere):
 
 
 def test_convolution_and_state_space_agree(hemisphere):
+    """Free decay from surge, heave and pitch offsets, 40 s (boatland.validation.timedomain: the code of
+    `boatland validate`'s state-space-vs-convolution case)."""
     db, mem = hemisphere
-    runs = {}
-    for method in ("convolution", "state_space"):
-        arr = compile_motion(db, mem, 0.05, method=method)
-        x0 = [0.2, 0, 1.0, 0, 0.02, 0]
-        runs[method] = arr.run(0.05, 800, x0=x0)["x"]
-    a, b = runs["convolution"], runs["state_space"]
-    for d in (0, 2, 4):
-        rms = np.sqrt(np.mean((a[:, d] - b[:, d]) ** 2)) / np.sqrt(np.mean(a[:, d] ** 2))
+    runs = free_decays(db, mem, HEMISPHERE_X0, 0.05, 800)
+    for d, rms in rms_differences(runs, (0, 2, 4)).items():
         assert rms < 0.01, (d, rms)
 
 
@@ -115,14 +112,10 @@ def test_convolution_and_state_space_agree_on_the_ctv(ctv24):
     target R² = 0.999 / order ≤ 12: heave 3.7 %, pitch 5.0 %.)
     """
     db, mem = ctv24
-    x0 = [0.2, 0.2, 0.3, 0.03, 0.03, 0.03]
-    runs = {m: compile_motion(db, mem, 0.05, method=m, memory_length=60.0).run(0.05, 1200, x0=x0)
-            for m in ("convolution", "state_space")}
+    runs = free_decays(db, mem, CTV_X0, 0.05, 1200, memory_length=60.0)
     assert all(r["status"] == 0 for r in runs.values())
-    a, b = runs["convolution"]["x"], runs["state_space"]["x"]
-    for d in range(5):  # yaw: no restoring and nothing couples into it from rest — it stays at 0.03 rad
-        rms = np.sqrt(np.mean((a[:, d] - b[:, d]) ** 2)) / np.sqrt(np.mean(a[:, d] ** 2))
-        assert rms < 0.01, (d, rms)
+    for d, rms in rms_differences(runs, range(5)).items():  # yaw: no restoring and nothing couples into it from
+        assert rms < 0.01, (d, rms)                        # rest — it stays at 0.03 rad
 
 
 def test_state_space_pole_outside_rk4_region_is_refused(ctv24):

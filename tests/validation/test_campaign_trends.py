@@ -7,51 +7,36 @@ quartering (mean 16 s) and 6/6 in beam seas (mean 3 s); slides beyond 0.1 m from
 only in beam seas (2/6; the rubber holds most slips to a few centimetres).
 """
 
-import numpy as np
+from pathlib import Path
+
 import pytest
 
-from boatland.campaign import load_campaign, run_campaign
 from boatland.campaign.runner import completed
-from boatland.campaign.store import INCIDENT_PREFIX
-from boatland.scenario_check import load, resolve_database
+from boatland.validation.campaigns import TRENDS_SET, mean_first_time, run_study, write_campaign
+from boatland.validation.campaigns import p_incident as _p_incident
 
-BASE = "../ctv_landing.toml"
+BASE = Path(__file__).resolve().parents[2] / "scenarios" / "ctv_landing.toml"
 
 
-def study(tmp_path, axes: str, name: str):
-    camp = tmp_path / "campaigns" / f"{name}.toml"
-    camp.parent.mkdir(exist_ok=True)
-    base = (__import__("pathlib").Path(__file__).resolve().parents[2] / "scenarios" / "ctv_landing.toml")
-    camp.write_text(f"""
-name = "{name}"
-scenario = "{base}"
-seeds = 6
-master_seed = 77
-duration = 600.0
-[set]
-"radiation.method" = "state_space"
-[axes]
-{axes}
-[incidents]
-slip_distance = [0.1]
-""")
-    c = load_campaign(camp, load_scenario=load)
-    store = run_campaign(c, tmp_path / f"{name}.h5", loaders=(load, resolve_database), workers=2)
-    t = store.table()
+def study(tmp_path, axes: dict, name: str):
+    """A campaign of the base scenario, 6 seeds × 10 min (boatland.validation.campaigns: the code of
+    `boatland validate`'s grotting-trends case)."""
+    f = write_campaign(tmp_path / "campaigns" / f"{name}.toml", name, BASE, seeds=6, master_seed=77, duration=600.0,
+                       set_=TRENDS_SET, axes=axes, incidents={"slip_distance": [0.1]})
+    c, t, _ = run_study(f, tmp_path / f"{name}.h5", workers=2)
     ok = completed(t)                                  # completed, or ended sliding off the landing (an outcome)
     assert ok.all(), [(int(r["trial"]), r["message"]) for r in t[~ok]]
     return c, t
 
 
 def p_incident(c, t, name="slip > 0.1 m"):
-    hit = np.isfinite(t[INCIDENT_PREFIX + name])
-    return {tuple(case.values.values()): hit[t["case"] == case.index].mean() for case in c.cases}
+    return _p_incident(c, t, name)
 
 
 @pytest.mark.slow
 def test_p_slip_rises_with_hs_and_falls_with_thrust(tmp_path):
     hs_values = (0.2, 0.4, 0.6, 0.8)
-    c, t = study(tmp_path, f'"sea.Hs" = {list(hs_values)}\n"thrust.force" = [80e3, 160e3]', "hs_thrust")
+    c, t = study(tmp_path, {"sea.Hs": list(hs_values), "thrust.force": [80e3, 160e3]}, "hs_thrust")
     p = p_incident(c, t)
     print("P(slip > 0.1 m in 10 min):", {k: round(float(v), 2) for k, v in p.items()})
     for thrust in (80e3, 160e3):
@@ -63,10 +48,9 @@ def test_p_slip_rises_with_hs_and_falls_with_thrust(tmp_path):
 
 @pytest.mark.slow
 def test_beam_and_quartering_seas_slip_far_more_than_head_seas(tmp_path):
-    c, t = study(tmp_path, '"sea.Hs" = [0.25]\n"sea.relative_direction_deg" = [180.0, 135.0, 90.0]', "heading")
+    c, t = study(tmp_path, {"sea.Hs": [0.25], "sea.relative_direction_deg": [180.0, 135.0, 90.0]}, "heading")
     p = p_incident(c, t, "first slip")
-    col = t[INCIDENT_PREFIX + "first slip"]
-    mean_t = {d: np.mean(np.where(np.isfinite(col), col, 600.0)[t["case"] == i]) for i, d in enumerate((180, 135, 90))}
+    mean_t = {int(k[1]): v for k, v in mean_first_time(c, t, "first slip", 600.0).items()}
     print("P(first slip in 10 min):", p, "mean time to it (censored at 600 s):", mean_t,
           "P(slip > 0.1 m):", p_incident(c, t))
     assert p[(0.25, 135.0)] > p[(0.25, 180.0)] and p[(0.25, 90.0)] > p[(0.25, 180.0)]

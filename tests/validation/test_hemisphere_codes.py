@@ -21,56 +21,19 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from boatland.hydro.capytaine_nc import read_capytaine
-from boatland.hydro.nemoh import read_nemoh
-from boatland.hydro.wamit import read_wamit
-
-BAND = (0.3, 3.0)          # rad/s
-RTOL = 0.03                # the solvers' own differences are 1–2 % (tests/data/refdata/README.md)
-PHASE_TOL = RTOL           # rad: the same 3 % of |X3| seen as an angle (≈ 1.7°)
-
-#: NEMOH v3.0.2 has no irregular-frequency removal. The hemisphere's first irregular frequency is at
-#: Ka = ω²a/g ≈ 2.56, ω ≈ 2.24 rad/s — reproduced here with Capytaine 3.0 on a hemisphere without a
-#: lid (B33 spikes at 2.24 rad/s, none with a lid). The resonance spoils NEMOH's heave coefficients by
-#: more than 3 % from about 1.96 to 2.54 rad/s (A33 −31 %, B33 −83 %, |X3| −55 % at 2.24 rad/s), so
-#: NEMOH is compared outside this window; test_nemoh_irregular_frequency checks the window is needed.
-NEMOH_IRREGULAR = (1.9, 2.6)
+from boatland.validation.hemisphere import NEMOH_IRREGULAR, PHASE_TOL, RTOL, band_grid, heave, read_codes
+from boatland.validation.hemisphere import compare_codes as compare
 
 
 @pytest.fixture(scope="module")
 def codes(refdata):
-    return {
-        "WAMIT": read_wamit(refdata / "wamit_sphere" / "sphere.1", rho=1000.0),
-        "NEMOH": read_nemoh(refdata / "nemoh_sphere"),
-        "CAPYTAINE": read_capytaine(refdata / "capytaine_sphere" / "sphere_hydrodynamics.nc"),
-    }
+    return read_codes(refdata)
 
 
 @pytest.fixture(scope="module")
 def grid(codes):
     """Capytaine's frequencies in the band (the three grids agree to ~1e-7 rad/s)."""
-    w = codes["CAPYTAINE"].omega
-    return w[(w >= BAND[0] - 1e-9) & (w <= BAND[1] + 1e-9)]
-
-
-def heave(db, grid):
-    """A33, B33 and X3(β = 0) on ``grid`` (linear interpolation; X by real and imaginary parts)."""
-    X = np.interp(grid, db.omega, db.X[2, 0].real) + 1j * np.interp(grid, db.omega, db.X[2, 0].imag)
-    return {"A33": np.interp(grid, db.omega, db.A[2, 2]), "B33": np.interp(grid, db.omega, db.B[2, 2]), "X3": X}
-
-
-def compare(db, ref, grid, mask):
-    """Max pointwise relative differences of A33, B33, |X3| and max phase difference of X3 [rad].
-
-    B33 is compared pointwise too: at the bottom of the band it is 12 % of its band maximum but still
-    well resolved (NEMOH and Capytaine within 1 % of WAMIT there), so no normalisation by the maximum
-    is needed.
-    """
-    a, r = heave(db, grid), heave(ref, grid)
-    out = {k: np.max(np.abs(a[k][mask] - r[k][mask]) / np.abs(r[k][mask])) for k in ("A33", "B33")}
-    out["|X3|"] = np.max(np.abs(np.abs(a["X3"][mask]) - np.abs(r["X3"][mask])) / np.abs(r["X3"][mask]))
-    out["phase"] = np.max(np.abs(np.angle(a["X3"][mask] / r["X3"][mask])))
-    return out
+    return band_grid(codes)
 
 
 def test_units_agree(codes):

@@ -54,38 +54,12 @@ scenarios use fender lines.
 import numpy as np
 import pytest
 
-from boatland.contact.fender import STICK
-from boatland.freqdomain import first_harmonic, hinged_rao
+from boatland.freqdomain import first_harmonic
 from boatland.hydro.builtin import load_builtin
-from boatland.model.landed import normal_follows
-from boatland.model.scenario import scenario_from_dict
-from boatland.trial.simulate import contact_arrays, simulate
-from boatland.waves.dispersion import wavenumber_scalar
+from boatland.trial.simulate import simulate
+from boatland.validation.hinge import AMPLITUDE_TOL, PERIODS, PHASE_TOL_DEG, bow_quartering, compare_hinge, head_seas
 
-POINT = [12.3, 0.0, 1.5]           # bow fender, body frame [m] (scenarios/ctv_landing.toml, centreline)
-FENDER_WIDTH = 1.0                 # a line fender: the tube meets its face (as the shipped scenarios)
-STIFFNESS, DAMPING = 1.0e6, 4.0e4  # fender normal c_f [N/m], d_f [N s/m]
-THRUST, THRUST_AT = 80.0e3, [-10.5, 0.0, -0.9]
-H = 0.1                            # wave height [m]
-PERIODS = 10                       # fitted window [periods]
-AMPLITUDE_TOL, PHASE_TOL_DEG = 0.02, 2.0
-
-
-def scenario(T, relative_direction_deg, memory, duration, yaw_damping=0.0, shear="rigid"):
-    """One strut straight ahead of the vessel (its contact plane faces −x), the fender just touching it;
-    ``shear`` the rubber's shear stiffness ("rigid", or N/m with the default 5 % of critical damping)."""
-    return scenario_from_dict({
-        "name": f"hinge_T{T:g}_{relative_direction_deg:g}",
-        "simulation": {"duration": duration, "seed": 1},
-        "vessel": {"database": "ctv24", "damping": {"linear": [0.0] * 5 + [yaw_damping]}},
-        "radiation": {"method": "convolution", "memory": memory},
-        "landing": {"monopile_diameter": 6.5, "diffraction": False,   # the open-sea RAO of the FD side
-                    "struts": [{"position": [-4.45, 0.0], "diameter": 0.35, "normal_deg": 180.0}]},
-        "fender": {"points": [POINT], "stiffness": STIFFNESS, "damping": DAMPING, "mu_s": 2.0, "mu_k": 2.0,
-                   "k_v": 0.0, "sideways": True, "shear_stiffness": shear, "width": FENDER_WIDTH},
-        "thrust": {"force": THRUST, "position": THRUST_AT, "ramp": 20.0},
-        "sea": {"kind": "regular", "H": H, "T": T, "relative_direction_deg": relative_direction_deg},
-    })
+# The scenarios and the comparison are boatland.validation.hinge's: `boatland validate` runs the same code.
 
 
 @pytest.fixture(scope="module")
@@ -95,29 +69,10 @@ def ctv24():
 
 def compare(db, s):
     """Time-domain first harmonics and frequency-domain reactions of (fn, ft_vertical, ft_horizontal)."""
-    r = simulate(s, db)
-    wave = s.sea.waves
-    w = wave.omega
-    x0, y0, psi = s.start_pose()
-    # the excitation is referred to the wave at the reference point's start position (waves.excitation)
-    k = wavenumber_scalar(w, db.water_depth, db.g)
-    th = np.radians(wave.direction_deg)
-    a = wave.H / 2 * np.exp(1j * (np.radians(wave.phase_deg) - k * (x0 * np.cos(th) + y0 * np.sin(th))))
-    ct = contact_arrays(s, db)
-    shear = {} if s.fender.rigid else {"shear_stiffness": ct.KT[0], "shear_damping": ct.CT[0]}
-    follows = normal_follows(s.fender.width, ct.RT, THRUST / STIFFNESS)   # the fender's face turns with the yaw
-    fd = hinged_rao(db, w, ct.P[0], beta_deg=wave.direction_deg - np.degrees(psi), normal=ct.N0[0],
-                    stiffness=STIFFNESS, damping=DAMPING, thrust=THRUST, thrust_position=THRUST_AT,
-                    additional_damping=s.additional_damping(db)[0], normal_follows=follows["follows"],
-                    tube_radius=follows.get("radius", np.inf), **shear)
-    window = r.t >= r.t[-1] - PERIODS * 2 * np.pi / w
+    c = compare_hinge(db, s)
     # linear stuck case: stuck and closed throughout the fitted window, the stick force is `needed`
-    assert np.all(r.mode[window, 0] == STICK)
-    assert r.fn[window, 0].min() > 0.5 * THRUST
-    np.testing.assert_allclose(r.needed[window, 0], np.hypot(*r.ft[window, 0].T), rtol=1e-9, atol=1e-6)
-    td = np.array([first_harmonic(r.t, y, w, PERIODS) for y in (r.fn[:, 0], r.ft[:, 0, 0], r.ft[:, 0, 1])])
-    static_td = np.array([r.fn[window, 0].mean(), r.ft[window, 0, 0].mean()])
-    return td, a * fd.contact_components()[0, 0, 0], static_td, fd.contact_components(static=True)[0, :2]
+    assert c.stuck and c.closed and c.needed_is_ft
+    return c.td, c.fd, c.static_td, c.static_fd
 
 
 def assert_close(td, fd, what):
@@ -133,8 +88,7 @@ SHEARS = ["rigid", 3.0e6]
 @pytest.mark.parametrize("shear", SHEARS)
 @pytest.mark.parametrize("T", [5.0, 7.0, 9.0])
 def test_stick_force_is_hinge_reaction_head_seas(ctv24, T, shear):
-    s = scenario(T, 180.0, memory=40.0, duration=20 + 2 * T + 60 + 14 * T, shear=shear)
-    td, fd, static_td, static_fd = compare(ctv24, s)
+    td, fd, static_td, static_fd = compare(ctv24, head_seas(T, shear))
     assert_close(td[0], fd[0], "normal force")
     assert_close(td[1], fd[1], "vertical stick force")
     # head seas on the centreline: no horizontal reaction in either domain
@@ -146,8 +100,7 @@ def test_stick_force_is_hinge_reaction_head_seas(ctv24, T, shear):
 @pytest.mark.parametrize("shear", SHEARS)
 @pytest.mark.parametrize("T", [5.0, 7.0, 9.0])
 def test_stick_force_is_hinge_reaction_bow_quartering(ctv24, T, shear):
-    s = scenario(T, 150.0, memory=120.0, duration=300.0, yaw_damping=1.0e6, shear=shear)
-    td, fd, _, _ = compare(ctv24, s)
+    td, fd, _, _ = compare(ctv24, bow_quartering(T, shear))
     for c, what in enumerate(("normal force", "vertical stick force", "horizontal stick force")):
         assert_close(td[c], fd[c], what)
 
@@ -159,7 +112,7 @@ def test_a_stiff_rubber_tends_to_the_rigid_stick(ctv24):
     within 0.34 %, 100× within 0.05 %."""
     runs = {}
     for shear in ("rigid", 3.0e7, 3.0e8):
-        s = scenario(7.0, 150.0, memory=120.0, duration=300.0, yaw_damping=1.0e6, shear=shear)
+        s = bow_quartering(7.0, shear)
         r = simulate(s, ctv24)
         w = s.sea.waves.omega
         runs[shear] = np.array([first_harmonic(r.t, y, w, PERIODS) for y in (r.fn[:, 0], r.ft[:, 0, 0], r.ft[:, 0, 1])])

@@ -9,37 +9,23 @@ demos/sphere/hydroData/sphere.h5 (WAMIT, radius 5 m, 200 m depth ≈ deep for th
 import numpy as np
 import pytest
 
-from boatland.hydro.bemio import read_bemio
+from boatland.validation.hemisphere import RADIUS, bemio_sphere, hulme_nondim, hulme_rel_error, hulme_table
 
 
 @pytest.fixture(scope="module")
 def hulme(refdata):
-    return np.loadtxt(refdata / "hulme" / "hulme1982_hemisphere_heave.dat", comments="#")
+    return hulme_table(refdata)
 
 
 @pytest.fixture(scope="module")
 def sphere(refdata):
-    return read_bemio(refdata / "bemio_sphere" / "sphere.h5")
+    return bemio_sphere(refdata)
 
 
-RADIUS = 5.0
-#: Hulme's table is printed to 4 decimals: each entry stands for a value within ±5e-5 of it. For small
-#: entries (λ = 0.0219 at kA = 4) that rounding alone is ±0.23 %, so a relative check must measure the
-#: distance to the interval the printed value stands for, not to the printed digits.
-HALF_UNIT = 5e-5
-
-
-def rel_error(bem, table):
-    """Distance of ``bem`` to Hulme's rounding interval, relative to the table value."""
-    return np.maximum(np.abs(bem - table) - HALF_UNIT, 0.0) / np.abs(table)
-
-
-def nondim(db):
-    V = 2 / 3 * np.pi * RADIUS ** 3
-    kA = db.omega ** 2 * RADIUS / db.g
-    mu = db.A[2, 2] / (db.rho * V)
-    lam = db.B[2, 2] / (db.rho * db.omega * V)
-    return kA, mu, lam
+# Hulme's table is printed to 4 decimals; the error is measured to the interval each printed value stands
+# for (boatland.validation.hemisphere.hulme_rel_error), the code `boatland validate` runs too.
+rel_error = hulme_rel_error
+nondim = hulme_nondim
 
 
 def test_added_mass_within_half_percent_of_hulme(sphere, hulme):

@@ -1,4 +1,4 @@
-r"""Seed 001's tank outcome for Model 2 in sea state J03 (§4.3.3, Fig. 4.20; Table 5.3, 5.4).
+r"""Ferreira González's (2023, TU Hamburg Dr.-Ing. dissertation) tank outcome for Model 2 in sea state J03 (§4.3.3, Fig. 4.20; Table 5.3, 5.4).
 
 In the tank the catamaran model pushed its fender on the landing in JONSWAP waves (H_s = 0.1 m,
 ω_p = 4.97 rad/s, head seas): with 123.84 N of thrust the fender *remained fixed*; with 52 N it
@@ -7,7 +7,7 @@ figures span the first few tens of seconds.
 
 We run both ship scenario files (``model2_j03.toml``: 123.84 N, ``model2_j03_52N.toml``: 52 N) over
 seeds 1–10 for their full 190 s, and count an *incident* when a fender point moves more than 1 cm from
-where it landed — seed 002's 10 cm incident (§4.2) at the model's 1:10 scale. Seed 002 §3.3/§4.2
+where it landed — Grøtting's (2015, NTNU MSc thesis) 10 cm incident (§4.2) at the model's 1:10 scale. He (§3.3/§4.2)
 model the time to the first incident as exponential: the rate is estimated by maximum likelihood
 with censoring, λ̂ = (incidents) / (total exposure to waves), and the probability that a record of
 T seconds of waves holds is e^{−λ̂T}.
@@ -25,38 +25,25 @@ thrust     incident in 190 s   incident in 40 s      λ̂ [1/s]                 
 So the simulator reproduces the tank's outcome for a tank-length record — 52 N slips in every
 seed, within seconds, as in the tank (16 s); 123.84 N holds in 8 of 10 — while over the 190 s
 (≈ 10 min full scale) of the scenario the 123.84 N landing sees a 1 cm incident in 5 of 10 seeds:
-more thrust lowers the incident rate about thirtyfold but does not make it zero.
+more thrust lowers the incident rate about thirtyfold but does not make it zero. ``boatland validate``
+(case model2-tank) runs the same code over all of J01–J04.
 """
 
 import numpy as np
 import pytest
 
-from boatland.scenario_check import load_checked
-from boatland.trial.simulate import prepare_memory, simulate, wave_start
+from boatland.validation.tank import first_incidents as _first_incidents
+from boatland.validation.tank import rate
 
 SEEDS = range(1, 11)
-LIMIT = 0.01       # [m] seed 002's 10 cm at 1:10
-RECORD = 40.0      # [s] of waves: a tank-length record
+RECORD = 40.0      # [s] of waves: a tank-length record (LIMIT: Grøtting's 10 cm at 1:10, 1 cm)
 
 
 def first_incidents(path):
-    scenario, db, _ = load_checked(path)
-    scenario = scenario.replace({"incidents.slip_distance": [LIMIT]})
-    memory = prepare_memory(scenario, db)
-    t0 = wave_start(scenario)
-    times = []
-    for seed in SEEDS:
-        r = simulate(scenario.replace({"simulation.seed": seed}), db, memory=memory)
-        assert r.completed
-        t = r.incident_times()[f"slip > {LIMIT:g} m"]
-        times.append(np.inf if t is None else t - t0)
-    return np.array(times), scenario.simulation.duration - t0
-
-
-def rate(times, exposure):
-    """Censored exponential MLE: incidents / total time at risk."""
-    hit = np.isfinite(times)
-    return hit.sum() / np.sum(np.where(hit, times, exposure))
+    """First-incident times after the waves start, and the exposure (boatland.validation.tank: the code
+    `boatland validate` runs too)."""
+    run = _first_incidents(path, SEEDS)
+    return run.times, run.exposure
 
 
 @pytest.mark.slow

@@ -35,39 +35,20 @@ NTNU; Wu, M. (2014), Numerical analysis of docking operation between service ves
 turbines, *Ocean Engineering* 91.
 """
 
-import numpy as np
 import pytest
 
-from boatland.campaign import load_campaign, run_campaign
-from boatland.campaign.report import read_store
-from boatland.scenario_check import default_scenario_path, load, resolve_database
+from boatland.scenario_check import default_scenario_path
+from boatland.validation.campaigns import fd_vs_td_campaign, run_study
 
 CASES = {180.0: (0.23, 0.26), 135.0: (0.125, 0.13), 90.0: (0.09, 0.10)}
 SEEDS = 24
 
 
-def campaign(tmp_path, heading: float, hs: tuple[float, ...]):
-    path = tmp_path / f"heading_{heading:g}.toml"
-    path.write_text(f"""
-name = "fd_vs_td_{heading:g}"
-scenario = "{default_scenario_path()}"
-seeds = {SEEDS}
-master_seed = 2026
-duration = 1800.0
-[set]
-"sea.Tp" = 7.0
-"sea.relative_direction_deg" = {heading}
-[axes]
-"sea.Hs" = {list(hs)}
-""")
-    return load_campaign(path, load_scenario=load)
-
-
 @pytest.mark.parametrize("heading", list(CASES))
 def test_screening_probability_lies_in_the_monte_carlo_interval(tmp_path, heading):
-    c = campaign(tmp_path, heading, CASES[heading])
-    run_campaign(c, tmp_path / f"{heading:g}.h5", loaders=(load, resolve_database), workers=2)
-    stats = read_store(tmp_path / f"{heading:g}.h5")["stats"]
+    # boatland.validation.campaigns: the campaign of `boatland validate`'s screening-vs-monte-carlo case
+    f = fd_vs_td_campaign(tmp_path, heading, CASES[heading], seeds=SEEDS, scenario=default_scenario_path())
+    _, _, stats = run_study(f, tmp_path / f"{heading:g}.h5", workers=2)
     for row in stats:
         p, lo, hi = row["first slip: P"], row["first slip: P lo"], row["first slip: P hi"]
         fd = row["screening: P(slip)"]
