@@ -4,7 +4,6 @@ run logs, bad input. Real processes throughout (boatland CLI, dask scheduler and
 
 import math
 import signal
-import socket
 import subprocess
 import sys
 import time
@@ -17,18 +16,11 @@ import pytest
 REPO = Path(__file__).resolve().parents[2]
 BASE = REPO / "scenarios" / "ctv_landing.toml"
 #: The ``dask`` command of this Python's environment (on PATH or not).
-DASK = str(Path(sys.executable).with_name("dask")) if Path(sys.executable).with_name("dask").exists() else "dask"
 
 
 def run(*args, timeout=900):
     return subprocess.run([sys.executable, "-m", "boatland", *map(str, args)], capture_output=True, text=True,
                           timeout=timeout)
-
-
-def free_port():
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
 
 
 def same(a, b):
@@ -147,25 +139,10 @@ def test_report_and_heaviest_samples(reference):
     assert str(logs[0]) in r.stdout
 
 
-def test_a_real_dask_cluster_gives_the_same_store(reference, tmp_path):
+def test_a_real_dask_cluster_gives_the_same_store(reference, tmp_path, dask_cluster):
     camp, one, _ = reference
-    port = free_port()
-    address = f"tcp://127.0.0.1:{port}"
-    procs = [subprocess.Popen([DASK, "scheduler", "--host", "127.0.0.1", "--port", str(port), "--no-dashboard"],
-                              stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)]
-    try:
-        time.sleep(2.0)
-        for _ in range(2):
-            procs.append(subprocess.Popen([DASK, "worker", address, "--nworkers", "1", "--nthreads", "1",
-                                           "--no-dashboard", "--memory-limit", "0"],
-                                          stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL))
-        r = run("campaign", camp, "-o", tmp_path / "dask.h5", "--scheduler", address)
-        assert r.returncode == 0, r.stderr
-    finally:
-        for p in procs[::-1]:
-            p.terminate()
-        for p in procs:
-            p.wait(timeout=30)
+    r = run("campaign", camp, "-o", tmp_path / "dask.h5", "--scheduler", dask_cluster)
+    assert r.returncode == 0, r.stderr
     same(summaries(one), summaries(tmp_path / "dask.h5"))
 
 

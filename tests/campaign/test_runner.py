@@ -2,7 +2,6 @@
 after SIGKILL; bad input. Real processes throughout (boatland CLI, dask scheduler and workers)."""
 
 import signal
-import socket
 import subprocess
 import sys
 import time
@@ -42,7 +41,6 @@ def run(*args, timeout=600, env=None):
 
 
 #: The ``dask`` command of this Python's environment (on PATH or not).
-DASK = str(Path(sys.executable).with_name("dask")) if Path(sys.executable).with_name("dask").exists() else "dask"
 
 
 def summaries(store):
@@ -82,12 +80,6 @@ def test_one_and_two_local_workers_give_the_same_store(reference, tmp_path):
     assert len(set(rows["seed"])) == 3                           # common seeds across the 4 cases
 
 
-def free_port():
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
 def test_blas_thread_counts_give_the_same_store(reference, tmp_path):
     """OPENBLAS_NUM_THREADS (and OMP_NUM_THREADS) 4 with two workers: the same store as 1 worker with the
     machine's default — every trial pins BLAS to one thread (boatland.reproducible)."""
@@ -98,32 +90,17 @@ def test_blas_thread_counts_give_the_same_store(reference, tmp_path):
     same(summaries(one), summaries(tmp_path / "four.h5"))
 
 
-def test_a_real_dask_cluster_gives_the_same_store(reference, tmp_path):
+def test_a_real_dask_cluster_gives_the_same_store(reference, tmp_path, dask_cluster):
     camp, one = reference
-    port = free_port()
-    address = f"tcp://127.0.0.1:{port}"
-    procs = [subprocess.Popen([DASK, "scheduler", "--host", "127.0.0.1", "--port", str(port), "--no-dashboard"],
-                              stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)]
-    try:
-        time.sleep(2.0)
-        for _ in range(2):
-            procs.append(subprocess.Popen([DASK, "worker", address, "--nworkers", "1", "--nthreads", "1",
-                                           "--no-dashboard", "--memory-limit", "0"],
-                                          stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL))
-        r = run("campaign", camp, "-o", tmp_path / "dask.h5", "--scheduler", address)
-        assert r.returncode == 0, r.stderr
-    finally:
-        for p in procs[::-1]:
-            p.terminate()
-        for p in procs:
-            p.wait(timeout=30)
+    r = run("campaign", camp, "-o", tmp_path / "dask.h5", "--scheduler", dask_cluster)
+    assert r.returncode == 0, r.stderr
     same(summaries(one), summaries(tmp_path / "dask.h5"))
 
 
-def test_unreachable_scheduler_is_a_clear_error(reference):
+def test_unreachable_scheduler_is_a_clear_error(reference, unused_port):
     camp, _ = reference
     t0 = time.monotonic()
-    r = run("campaign", camp, "-o", Path(camp).with_suffix(".x.h5"), "--scheduler", f"tcp://127.0.0.1:{free_port()}")
+    r = run("campaign", camp, "-o", Path(camp).with_suffix(".x.h5"), "--scheduler", f"tcp://127.0.0.1:{unused_port}")
     assert r.returncode == 2 and "no Dask scheduler answered" in r.stderr and "Traceback" not in r.stderr
     assert time.monotonic() - t0 < 60
 
