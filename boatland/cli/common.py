@@ -38,7 +38,9 @@ def scenario_inputs(scenario) -> list[Path]:
     if scenario.source and not str(scenario.source).startswith("<"):
         files.append(Path(scenario.source))
     if scenario.vessel.database_path is not None:
-        files.append(Path(scenario.vessel.database_path))
+        from boatland.model.imported import database_files
+
+        files += database_files(scenario.vessel.database_path)
     sea = scenario.sea
     if sea is not None and sea.kind == "measured":
         files.append(Path(sea.waves.source))
