@@ -14,7 +14,7 @@ __all__ = ["DEFAULT_VESSEL", "resolve_db", "scenario_argument", "screening_optio
            "freq_check", "freq_setup", "scenario_inputs", "load_guarded", "with_overrides", "check_memory",
            "available_memory", "compile_notice", "kernels_cached", "print_json"]
 
-DEFAULT_VESSEL = "ctv24"
+DEFAULT_VESSEL = "ctv27"
 
 
 def resolve_db(spec: str):

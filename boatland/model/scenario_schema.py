@@ -139,8 +139,10 @@ SCENARIO_SCHEMA = Table({
                                              "sea's: 2 Tp (2 T for regular waves)"),
     }, required=True, doc="time stepping"),
     "vessel": Table({
-        "database": Key(str, default="ctv24", doc="built-in hydrodynamic database ('ctv24', 'model2') or a "
-                                                  "path to one, relative to the scenario file"),
+        "database": Key(str, default="ctv27", doc="built-in hydrodynamic database ('ctv27', 'ctv24', 'model2') or a "
+                                                  "path to one (any BEM output boatland reads, or a vessel file "
+                                                  "with a [bem] table and mass properties), relative to the "
+                                                  "scenario file"),
         "heading_deg": Key(float, doc="global direction of the vessel's x axis (bow) [deg]; default: the "
                                       "bow points at the landing (0 without a landing)"),
         "position": Vector(size=2, names=("x", "y"), doc="global position of the reference point at t = 0 "
