@@ -36,7 +36,7 @@ def add_parser(sub) -> None:
     imp.add_argument("--name", help="vessel name to store (default: from the file)")
     mass = imp.add_argument_group(
         "mass properties", "for BEM output without a mass matrix (WAMIT, NEMOH, most BEMIO files): the checks of "
-                           "a vessel file's [inertia] (mass = ρ∇ within 1 %%, stable in roll and pitch, possible "
+                           "a vessel file's [inertia] (mass = ρ∇ within 1 %, stable in roll and pitch, possible "
                            "inertia); the restoring matrix is moved to this mass and centre of gravity")
     mass.add_argument("--mass", type=positive("kg"), metavar="KG", help="mass [kg] (default: ρ∇ of the database)")
     mass.add_argument("--cog", type=finite, nargs=3, metavar=("X", "Y", "Z"),
