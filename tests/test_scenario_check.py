@@ -32,7 +32,7 @@ def test_default_scenario_is_the_quick_start_trial():
 
 def test_problems_give_exit_status_2_and_one_line_each(tmp_path):
     text = (SCENARIOS / "ctv_landing.toml").read_text()
-    text = text.replace("Hs = 0.8 ", "Hs = -0.8 ").replace('database = "ctv27"', 'database = "ctv72"')
+    text = text.replace("Hs = 0.4 ", "Hs = -0.4 ").replace('database = "ctv27"', 'database = "ctv72"')
     path = tmp_path / "bad.toml"
     path.write_text(text)
     report = check_file(path)
