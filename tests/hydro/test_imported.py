@@ -172,8 +172,8 @@ def test_imported_sphere_runs_from_a_scenario_file_alone(refdata, tmp_path):
     out = json.loads(r.stdout)
     assert out["status"] == "completed" and out["provenance"]["database"] == "sphere"
     assert out["max_motions"]["heave [m]"] == pytest.approx(0.5)
-    with h5py.File(tmp_path / "run.h5") as f:
-        t, z = f["t"][:], f["x"][:, 2]
+    with h5py.File(tmp_path / "run.h5") as f:                 # the run's time series (CF dataset)
+        t, z = f["time"][:], f["heave"][:]
     assert t[-1] == pytest.approx(20.0)
     down = np.flatnonzero((z[:-1] > 0) & (z[1:] <= 0))
     crossings = t[down] - z[down] * (t[down + 1] - t[down]) / (z[down + 1] - z[down])
