@@ -1,5 +1,5 @@
 r"""Monte Carlo campaigns of the Wigley ctv24's landing (read from ``scenarios/ctv24_landing.toml`` so
-these cases follow the default vessel): Grøtting's (2015) heading, period, wave-height and thrust trends,
+these cases stay on the vessel their committed figures were measured on): Grøtting's (2015) heading, period, wave-height and thrust trends,
 and the frequency-domain screening against the time domain.
 
 Grøtting, H. (2015), *Small Water Plane Area Solutions for Access of Offshore Wind Turbines*, MSc thesis,
