@@ -27,7 +27,7 @@ import h5py
 import numpy as np
 
 REPO = Path(__file__).resolve().parents[1]
-BASE = REPO / "scenarios" / "ctv_landing.toml"
+BASE = REPO / "scenarios" / "ctv24_landing.toml"   # the figures' vessel (ctv24, 80 kN)
 sys.path.insert(0, str(REPO))
 
 

@@ -57,7 +57,7 @@ def study_file(tmp: Path, access: float, seeds: int = 8) -> Path:
     text = STUDY.read_text(encoding="utf-8")
     text = re.sub(r"(?m)^duration = .*$", f"duration = {access:g}", text)
     text = re.sub(r"(?m)^seeds = .*$", f"seeds = {seeds}", text)
-    text = text.replace('"../ctv_landing.toml"', f'"{(STUDY.parent / "../ctv_landing.toml").resolve()}"')
+    text = text.replace('"../ctv24_landing.toml"', f'"{(STUDY.parent / "../ctv24_landing.toml").resolve()}"')
     path = tmp / f"study_{access:g}_{seeds}.toml"
     path.write_text(text, encoding="utf-8")
     return path

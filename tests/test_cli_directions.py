@@ -12,7 +12,7 @@ import pytest
 from boatland.hydro import write_bemio
 from boatland.hydro.builtin import load_builtin
 
-SCENARIO = Path(__file__).resolve().parents[1] / "scenarios" / "ctv_landing.toml"
+SCENARIO = Path(__file__).resolve().parents[1] / "scenarios" / "ctv24_landing.toml"   # ctv24-derived databases
 
 
 def run(*args):

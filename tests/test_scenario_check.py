@@ -24,7 +24,7 @@ def test_every_shipped_scenario_checks_clean_against_its_database(path):
 
 
 def test_default_scenario_is_the_quick_start_trial():
-    assert default_scenario_path() == SCENARIOS / "ctv_landing.toml"
+    assert default_scenario_path().resolve() == (SCENARIOS / "ctv_landing.toml").resolve()   # scenarios/ links to the package
     scenario, db, check = load_checked(default_scenario_path())
     assert db.name and check.ok
     assert scenario.time_step(db) == 0.05
@@ -32,14 +32,14 @@ def test_default_scenario_is_the_quick_start_trial():
 
 def test_problems_give_exit_status_2_and_one_line_each(tmp_path):
     text = (SCENARIOS / "ctv_landing.toml").read_text()
-    text = text.replace("Hs = 1.5 ", "Hs = -1.5 ").replace('database = "ctv24"', 'database = "ctv42"')
+    text = text.replace("Hs = 0.4 ", "Hs = -0.4 ").replace('database = "ctv27"', 'database = "ctv72"')
     path = tmp_path / "bad.toml"
     path.write_text(text)
     report = check_file(path)
     assert not report.ok and report.exit_status == 2
     keys = [k for k, _ in report.problems]
     assert sorted(keys) == ["sea.Hs", "vessel.database"]
-    assert "did you mean 'ctv24'" in report.text
+    assert "did you mean 'ctv27'" in report.text
     assert report.text.splitlines()[0] == f"{path}: 2 problems:"
 
 

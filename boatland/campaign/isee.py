@@ -68,7 +68,8 @@ from boatland.campaign.store import INCIDENT_PREFIX, CampaignStore
 from boatland.errors import BoatlandInputError
 from boatland.freqdomain.isee import IseeEstimate, draw, estimate
 from boatland.freqdomain.margins import LandedMargins, landed_margins
-from boatland.freqdomain.screening import LandingSetup, incident_probability, slip_transfer, spectral_moments
+from boatland.freqdomain.screening import (LandingSetup, distinct_events, incident_probability, response_correlation,
+                                           slip_transfer, spectral_moments)
 from boatland.freqdomain.screening import limiting_hs as fd_limiting_hs
 from boatland.model.gaussian_sea import GaussianSea
 from boatland.model.seastate import SeaState
@@ -647,7 +648,9 @@ def _summaries(campaign, table, levels, refs, curves, names, loaders):
 
 def _fd_case(campaign, c, loaders, dbs):
     """The screening's view of case ``c``, cached: (spectral moments for Hs = 1 (1, 1, R, 3), capacities, Tp,
-    relative direction, access) — one long-crested spectral part only (else None)."""
+    relative direction, access, the margins that are events of their own) — one long-crested spectral part
+    only (else None). Margins correlated at ρ ≥ 0.99 (the two contacts' in head seas) count once, as in
+    ``boatland screen`` (:func:`boatland.freqdomain.screening.distinct_events`)."""
     key = ("fd", c)
     if key not in dbs:
         dbs[key] = None
@@ -665,8 +668,11 @@ def _fd_case(campaign, c, loaders, dbs):
                     p = parts[0]
                     beta = (p.direction_deg - setup.heading_deg) % 360.0
                     tr = slip_transfer(db, setup, beta_deg=[beta])
-                    m, _ = spectral_moments(tr, [p.Tp], sea=p, water_depth=sc.wave_model(db).water_depth, g=db.g)
-                    dbs[key] = (m, tr.capacity, p.Tp, beta, _access(campaign, sc))
+                    h = sc.wave_model(db).water_depth
+                    m, _ = spectral_moments(tr, [p.Tp], sea=p, water_depth=h, g=db.g)
+                    keep = distinct_events(m[..., 0], tr.capacity,
+                                           response_correlation(tr, [p.Tp], sea=p, water_depth=h, g=db.g))
+                    dbs[key] = (m, tr.capacity, p.Tp, beta, _access(campaign, sc), keep)
         except Exception:  # noqa: BLE001 — the screening is a comparison; NaN where it cannot answer
             dbs[key] = None
     return dbs[key]
@@ -682,8 +688,9 @@ def _screening_p(campaign, c, hs, statistics, loaders, dbs) -> float:
     fd = _fd_case(campaign, c, loaders, dbs)
     if fd is None or hs is None:
         return math.nan
-    m, cap, tp, _, access = fd
-    return float(incident_probability(hs, m, cap, [tp], statistics=statistics, access_duration=access)[1][0, 0])
+    m, cap, tp, _, access, keep = fd
+    return float(incident_probability(hs, m, cap, [tp], statistics=statistics, access_duration=access,
+                                      keep=keep)[1][0, 0])
 
 
 def _screening_limit(campaign, c, statistics, loaders, dbs) -> float:
@@ -691,9 +698,9 @@ def _screening_limit(campaign, c, statistics, loaders, dbs) -> float:
     fd = _fd_case(campaign, c, loaders, dbs)
     if fd is None:
         return math.nan
-    m, cap, tp, beta, access = fd
+    m, cap, tp, beta, access, keep = fd
     return float(fd_limiting_hs(m, cap, [tp], [beta], accept=campaign.isee.accept, statistics=statistics,
-                                access_duration=access).Hs[0, 0])
+                                access_duration=access, keep=keep).Hs[0, 0])
 
 
 # ------------------------------------------------------------------------------------ looking at samples

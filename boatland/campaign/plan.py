@@ -47,6 +47,7 @@ from typing import Any
 import numpy as np
 
 from boatland.errors import BoatlandInputError
+from boatland.model.imported import database_files
 from boatland.model.scenario import Scenario
 from boatland.model.tomlspec import Key, Problems, SpecError, Table, Vector, parse_toml_file, validate
 from boatland.trial.simulate import exposure_start
@@ -240,7 +241,7 @@ class Campaign:
             scenarios = [self.base] + [self.base.replace(dict(c.values)) for c in self.cases if c.values]
         for sc in scenarios:
             if sc.vessel.database_path is not None:
-                files.append(Path(sc.vessel.database_path))
+                files += database_files(sc.vessel.database_path)
             if sc.sea is not None and sc.sea.kind == "measured":
                 files.append(Path(sc.sea.waves.source))
         out: list[Path] = []

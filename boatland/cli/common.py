@@ -14,7 +14,7 @@ __all__ = ["DEFAULT_VESSEL", "resolve_db", "scenario_argument", "screening_optio
            "freq_check", "freq_setup", "scenario_inputs", "load_guarded", "with_overrides", "check_memory",
            "available_memory", "compile_notice", "kernels_cached", "print_json"]
 
-DEFAULT_VESSEL = "ctv24"
+DEFAULT_VESSEL = "ctv27"
 
 
 def resolve_db(spec: str):
@@ -38,7 +38,9 @@ def scenario_inputs(scenario) -> list[Path]:
     if scenario.source and not str(scenario.source).startswith("<"):
         files.append(Path(scenario.source))
     if scenario.vessel.database_path is not None:
-        files.append(Path(scenario.vessel.database_path))
+        from boatland.model.imported import database_files
+
+        files += database_files(scenario.vessel.database_path)
     sea = scenario.sea
     if sea is not None and sea.kind == "measured":
         files.append(Path(sea.waves.source))

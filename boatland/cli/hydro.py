@@ -7,7 +7,8 @@ import json
 from pathlib import Path
 
 from boatland.cli.common import DEFAULT_VESSEL, resolve_db
-from boatland.cli.guard import Output, check_outputs, no_subcommand, positive
+from boatland.cli.guard import Output, check_outputs, finite, no_subcommand, positive
+from boatland.errors import BoatlandInputError
 
 __all__ = ["add_parser", "cmd_import", "cmd_info", "cmd_build", "cmd_list"]
 
@@ -33,6 +34,21 @@ def add_parser(sub) -> None:
                                                "(WAMIT; default 1025)")
     imp.add_argument("--g", type=positive("m/s²", 1e3), help="gravity [m/s²] for formats that do not store it")
     imp.add_argument("--name", help="vessel name to store (default: from the file)")
+    mass = imp.add_argument_group(
+        "mass properties", "for BEM output without a mass matrix (WAMIT, NEMOH, most BEMIO files): the checks of "
+                           "a vessel file's [inertia] (mass = ρ∇ within 1 %, stable in roll and pitch, possible "
+                           "inertia); the restoring matrix is moved to this mass and centre of gravity")
+    mass.add_argument("--mass", type=positive("kg"), metavar="KG", help="mass [kg] (default: ρ∇ of the database)")
+    mass.add_argument("--cog", type=finite, nargs=3, metavar=("X", "Y", "Z"),
+                      help="centre of gravity in the database's frame [m] (default: the database's)")
+    rad = mass.add_mutually_exclusive_group()
+    rad.add_argument("--radii", type=positive("m"), nargs=3, metavar=("RXX", "RYY", "RZZ"),
+                     help="radii of gyration about the centre of gravity [m]")
+    rad.add_argument("--inertia", type=positive("kg m²"), nargs=3, metavar=("IXX", "IYY", "IZZ"),
+                     help="principal moments of inertia about the centre of gravity [kg m²]")
+    mass.add_argument("--hydrostatic-restoring", action="store_true",
+                      help="the file's restoring matrix is pure hydrostatics (no weight terms of its own centre of "
+                           "gravity, which WAMIT, NEMOH, AQWA and Capytaine include)")
     imp.set_defaults(func=cmd_import)
 
     info = hsub.add_parser("info", help="summarise a database: band, directions, natural periods, warnings",
@@ -46,10 +62,13 @@ def add_parser(sub) -> None:
     info.set_defaults(func=cmd_info)
 
     bld = hsub.add_parser("build", help="compute a catamaran database with Capytaine from a vessel file",
-                          description="Build a hydrodynamic database for a parametric catamaran (two "
-                                      "Wigley-type demihulls) with Capytaine: radiation and diffraction "
-                                      "over the vessel file's frequencies and directions, A∞ and A₀, "
-                                      "hydrostatics, mass matrix. Examples: scenarios/vessels/*.toml.")
+                          description="Build a hydrodynamic database for a parametric catamaran (a CTV hull "
+                                      "with a transom, hard chine or round bilge, or two Wigley-type "
+                                      "demihulls) with Capytaine: radiation and diffraction over the vessel "
+                                      "file's frequencies and directions, A∞ and A₀, hydrostatics, mass "
+                                      "matrix, and the hull above water for the viewers. A vessel file with "
+                                      "a [bem] table instead writes its BEM output with the file's mass "
+                                      "properties (no Capytaine). Examples: scenarios/vessels/*.toml.")
     bld.add_argument("vessel", type=Path, help="vessel file (TOML)")
     bld.add_argument("-o", "--output", type=Path, help="database to write (default: <vessel>.h5 beside "
                                                        "the current directory)")
@@ -66,6 +85,21 @@ def cmd_import(args) -> int:
 
     check_outputs([Output("-o", args.output)], [args.path])
     db, fmt = read_hydro(args.path, fmt=args.format, rho=args.rho, g=args.g)
+    given = [f for f in ("mass", "cog", "radii", "inertia") if getattr(args, f) is not None]
+    if given or args.hydrostatic_restoring:
+        from boatland.model.imported import MassProperties, apply_mass_properties
+
+        if args.radii is None and args.inertia is None:
+            raise BoatlandInputError("--radii or --inertia: missing: the mass properties need the body's inertia "
+                                     "(radii of gyration or principal moments about its centre of gravity)")
+        keys = {"mass": "--mass", "cog": "--cog", "weight_in_restoring": "--hydrostatic-restoring",
+                **{f"r_{a}": f"--radii ({a})" for a in ("xx", "yy", "zz")},
+                **{f"i_{a}": f"--inertia ({a})" for a in ("xx", "yy", "zz")}}
+        mp = MassProperties(mass=args.mass, cog=tuple(args.cog) if args.cog else None,
+                            radii=tuple(args.radii) if args.radii else (None,) * 3,
+                            inertia=tuple(args.inertia) if args.inertia else (None,) * 3,
+                            weight_in_restoring=not args.hydrostatic_restoring, keys=keys)
+        db = apply_mass_properties(db, mp, source="the command line")
     if args.name:
         db = db.replace(name=args.name)
     write_bemio(db, args.output)

@@ -22,6 +22,7 @@ FORMATS = {
     "nemoh": "NEMOH v2/v3 run folder (Nemoh.cal, Mesh/, Results/)",
     "aqwa": "AQWA .AH1 (+ .LIS beside it)",
     "capytaine": "Capytaine NetCDF dataset (.nc)",
+    "vessel": "vessel file (.toml) with a [bem] table: any of the above plus its mass, centre of gravity, inertia",
 }
 
 
@@ -52,6 +53,8 @@ def detect_format(path: str | Path) -> str:
     if suffix in (".h5", ".hdf5", ".nc"):
         raise HydroDataError(path, None, "not an HDF5/NetCDF file (empty, truncated or of another kind); "
                                          "expected a BEMIO HDF5 database or a Capytaine NetCDF dataset")
+    if suffix == ".toml":
+        return "vessel"
     if suffix in (".1", ".3", ".hst", ".out"):
         return "wamit"
     if suffix in (".ah1", ".lis"):
@@ -99,4 +102,7 @@ def read_hydro(path: str | Path, *, fmt: str | None = None, rho: float | None = 
     if fmt == "capytaine":
         from boatland.hydro.capytaine_nc import read_capytaine
         return read_capytaine(path, **options), fmt
+    if fmt == "vessel":
+        from boatland.hydro.imported import read_vessel_file
+        return read_vessel_file(path), fmt
     raise HydroDataError(path, None, f"unknown format {fmt!r}; expected one of {', '.join(FORMATS)}")

@@ -13,6 +13,8 @@ boatland's extras live under ``/body1/boatland/`` where other readers ignore the
   un-normalising is not exact in floating point); used only while they agree with the BEMIO arrays,
   so a file edited by another tool is read from its BEMIO arrays;
 - ``mesh/{vertices, faces}``: wetted hull panels;
+- ``topsides/{vertices, faces}``: the hull above the waterline (topsides, deck, deckhouse), drawn by
+  the viewers only;
 - attributes ``name``, ``provenance_*``.
 
 Other groups present in a file (IRFs, state-space fits) are left for :mod:`boatland.irf` to read and
@@ -115,6 +117,9 @@ def write_bemio(db: HydroDB, path: str | Path) -> Path:
             if db.mesh is not None:
                 _store(ex, "mesh/vertices", db.mesh.vertices)
                 _store(ex, "mesh/faces", db.mesh.faces)
+            if db.topsides is not None:
+                _store(ex, "topsides/vertices", db.topsides.vertices)
+                _store(ex, "topsides/faces", db.topsides.faces)
     return path
 
 
@@ -226,9 +231,11 @@ def read_bemio(path: str | Path) -> HydroDB:
             reader=str(ex.get("provenance_reader", "bemio")),
             notes=tuple(json.loads(ex.get("provenance_notes", "[]"))) + tuple(notes),
         )
-        mesh = None
+        mesh = topsides = None
         if f"{_EXTRA}/mesh/vertices" in f:
             mesh = HullMesh(num(f"{_EXTRA}/mesh/vertices"), get(f"{_EXTRA}/mesh/faces"))
+        if f"{_EXTRA}/topsides/vertices" in f:
+            topsides = HullMesh(num(f"{_EXTRA}/topsides/vertices"), get(f"{_EXTRA}/topsides/faces"))
     try:
         return HydroDB(
             omega=w, A=A, B=B, X=X, wave_dir_deg=beta, C=C, A_inf=A_inf, A_0=A0, M=M,
@@ -237,6 +244,7 @@ def read_bemio(path: str | Path) -> HydroDB:
             cob=np.zeros(3) if cb is None else cb.reshape(-1),
             disp_vol=0.0 if vol is None else float(vol.reshape(-1)[0]),
             water_depth=water_depth, rho=rho, g=g, name=str(name), provenance=prov, mesh=mesh,
+            topsides=topsides,
         )
     except HydroDataError as exc:
         raise HydroDataError(path, exc.where, exc.message) from None

@@ -6,11 +6,16 @@ writes the BEMIO HDF5 database (atomically).
 
 Numerics, chosen deliberately
 -----------------------------
-- **Mesh**: the generalized Wigley catamaran of :mod:`boatland.model.hull`. Only a quarter is
-  meshed — the port demihull's forebody — and Capytaine is told about both symmetry planes with
-  nested :class:`capytaine.ReflectionSymmetricMesh` (``xOz`` inside, ``yOz`` outside), which cuts
-  the influence matrices to four independent blocks. The hull is fore–aft symmetric; the centre of
-  gravity need not be (it enters only M and C). Panel size: by default the largest panel edge is
+- **Mesh**: the hull form of the vessel file. The generalized Wigley catamaran of
+  :mod:`boatland.model.hull` is fore–aft symmetric: only a quarter is meshed — the port demihull's
+  forebody — and Capytaine is told about both symmetry planes with nested
+  :class:`capytaine.ReflectionSymmetricMesh` (``xOz`` inside, ``yOz`` outside), which cuts the
+  influence matrices to four independent blocks; its centre of gravity need not be symmetric (it
+  enters only M and C). The CTV form of :mod:`boatland.model.ctv_hull` (transom stern) is symmetric
+  port–starboard only: the whole port demihull is meshed, transom included, with one ``xOz``
+  reflection (two blocks, each twice as large: about four times the ctv24 cost for the same panel
+  size). The part above the waterline (topsides, deck) goes into the database for the viewers only.
+  Panel size: by default the largest panel edge is
   λ(ω_max)/8, i.e. at least 8 panels per shortest wavelength (Capytaine itself warns below ~5.7 for
   square panels: face radius > λ/8); the vessel file may set it or the panel counts, and fewer than
   4 panels per wavelength is refused (:mod:`boatland.model.vessel`). The figure is recorded in the
@@ -38,7 +43,8 @@ Numerics, chosen deliberately
   reference point, and its wave direction is the direction of travel, as boatland's.
 - **Restoring**: Capytaine's rigid-body hydrostatic stiffness with the vessel's mass and centre of
   gravity (hydrostatics plus the weight terms), cross-checked against the closed-form values of
-  :class:`~boatland.model.hull.WigleyCatamaran` (difference noted).
+  :class:`~boatland.model.hull.WigleyCatamaran` or the quadrature of the lines of
+  :class:`~boatland.model.ctv_hull.CTVCatamaran` (difference noted).
 """
 
 from __future__ import annotations
@@ -56,7 +62,8 @@ from typing import Iterator
 import numpy as np
 
 from boatland.conventions import PORT_STARBOARD_SIGN, mirror_direction_deg
-from boatland.model.hull import PanelCounts, WigleyCatamaran
+from boatland.model.ctv_hull import CTVCatamaran
+from boatland.model.hull import WigleyCatamaran
 from boatland.model.hydrodb import HydroDB, Provenance
 from boatland.model.vessel import VesselSpec, load_vessel
 
@@ -85,7 +92,7 @@ def _quiet_capytaine(level: int = logging.ERROR) -> Iterator[None]:
         log.setLevel(old)
 
 
-def lid_depth(hull: WigleyCatamaran, omega_max: float, g: float) -> float:
+def lid_depth(hull: WigleyCatamaran | CTVCatamaran, omega_max: float, g: float) -> float:
     r"""Depth of the irregular-frequency lid below the waterline [m], > 0.
 
     The first irregular frequency of a box of waterplane :math:`L \times b` closed by a lid at depth
@@ -144,19 +151,32 @@ def _exact_mirror_mesh_class():
     return ExactMirrorMesh
 
 
-def _symmetric(cpt, vertices, faces):
-    """Quarter panels → nested ReflectionSymmetricMesh (xOz inside, yOz outside)."""
-    quarter = _exact_mirror_mesh_class()(vertices, faces)
-    return cpt.ReflectionSymmetricMesh(half=cpt.ReflectionSymmetricMesh(half=quarter, plane="xOz"), plane="yOz")
+def _symmetric(cpt, vertices, faces, planes=("xOz", "yOz")):
+    """Quarter panels → nested ReflectionSymmetricMesh (xOz inside, yOz outside); half panels with
+    ``planes=("xOz",)`` → one ReflectionSymmetricMesh."""
+    mesh = _exact_mirror_mesh_class()(vertices, faces)
+    for plane in planes:
+        mesh = cpt.ReflectionSymmetricMesh(half=mesh, plane=plane)
+    return mesh
+
+
+def _bem_panels(hull, counts, z_lid):
+    """(hull panels, lid panels or None, symmetry planes) of the part of ``hull`` the BEM meshes."""
+    if isinstance(hull, CTVCatamaran):
+        lid = hull.lid_half_panels(counts, z_lid) if z_lid is not None else None
+        return hull.half_panels(counts), lid, ("xOz",)
+    lid = hull.lid_quarter_panels(counts.n_half_length, counts.n_lid, z_lid) if z_lid is not None else None
+    return hull.quarter_panels(counts.n_half_length, counts.n_girth), lid, ("xOz", "yOz")
 
 
 def capytaine_body(spec: VesselSpec):
-    """The Capytaine floating body of ``spec``: quarter mesh with both symmetries, lid, 6 rigid DOFs.
+    """The Capytaine floating body of ``spec``: the symmetric part of its mesh (Wigley: a quarter with
+    both symmetries; CTV: a half with port–starboard symmetry), the lid, 6 rigid DOFs.
 
     Returns
     -------
     body : capytaine.FloatingBody
-    counts : PanelCounts
+    counts : PanelCounts or CTVPanelCounts
     z_lid : float or None
         Lid height (negative), None without a lid.
     """
@@ -164,12 +184,11 @@ def capytaine_body(spec: VesselSpec):
 
     hull = spec.hull
     counts = spec.panel_counts()
+    z_lid = -lid_depth(hull, spec.omega_max, spec.g) if spec.lid else None
+    (hv, hf), lid_panels, planes = _bem_panels(hull, counts, z_lid)
     with _quiet_capytaine():
-        mesh = _symmetric(cpt, *hull.quarter_panels(counts.n_half_length, counts.n_girth))
-        lid, z_lid = None, None
-        if spec.lid:
-            z_lid = -lid_depth(hull, spec.omega_max, spec.g)
-            lid = _symmetric(cpt, *hull.lid_quarter_panels(counts.n_half_length, counts.n_lid, z_lid))
+        mesh = _symmetric(cpt, hv, hf, planes)
+        lid = _symmetric(cpt, *lid_panels, planes) if lid_panels is not None else None
         body = cpt.FloatingBody(mesh=mesh, lid_mesh=lid, dofs=cpt.rigid_body_dofs(rotation_center=(0.0, 0.0, 0.0)),
                                 center_of_mass=tuple(spec.cog), mass=spec.total_mass, name=spec.name)
     return body, counts, z_lid
@@ -303,6 +322,7 @@ def build_database(spec: VesselSpec, *, progress: bool = True) -> HydroDB:
         omega=omegas, A=A, B=B, X=X, wave_dir_deg=beta, C=C, A_inf=limits["A_inf"], A_0=limits["A_0"],
         M=spec.mass_matrix(), ref_point=np.zeros(3), cog=spec.cog, cob=cob, disp_vol=volume,
         water_depth=depth, rho=rho, g=g, name=spec.name, provenance=prov, mesh=hull.mesh(counts),
+        topsides=hull.topsides() if isinstance(hull, CTVCatamaran) else None,
     )
 
 
@@ -314,21 +334,38 @@ def _decay(omegas: np.ndarray, b33: np.ndarray) -> tuple[float, float]:
     return abs(float(b33[-1])) / peak, float(np.max(np.abs(b33[top]))) / peak
 
 
-def _notes(spec: VesselSpec, hull: WigleyCatamaran, counts: PanelCounts, z_lid, omegas, B, C, volume,
-           seconds) -> list[str]:
-    n_hull = 8 * counts.n_half_length * counts.n_girth
-    n_lid = 4 * counts.n_half_length * counts.n_lid if z_lid is not None else 0
+def _hull_text(hull) -> str:
+    if isinstance(hull, CTVCatamaran):
+        hs = hull.hydrostatics()
+        sec = (f"hard-chine sections (deadrise {hull.deadrise_deg:g}° aft, {hull.bow_deadrise_deg:g}° at the stem)"
+               if hull.section == "chine" else f"round-bilge sections (exponent {hull.bilge_exponent:g})")
+        return (f"hull: two CTV demihulls with a transom stern L = {hull.length:g} m, b = {hull.demihull_beam:g} m, "
+                f"T = {hull.draft:g} m, separation {hull.separation:g} m, {sec}, transom {hull.transom_beam:g} b "
+                f"wide and {hull.transom_draft:g} T deep, entrance half-angle {hull.entrance_deg:g}° "
+                f"(C_b = {hs.block_coefficient:.4f}, LCB {hs.cob[0]:+.3f} m, LCF {hs.lcf:+.3f} m)")
+    return (f"hull: two generalized Wigley demihulls L = {hull.length:g} m, b = {hull.demihull_beam:g} m, "
+            f"T = {hull.draft:g} m, separation {hull.separation:g} m, p = {hull.p:.4g} "
+            f"(C_b = {hull.block_coefficient:.4f})")
+
+
+def _notes(spec: VesselSpec, hull, counts, z_lid, omegas, B, C, volume, seconds) -> list[str]:
+    (_, hf), lid_panels, planes = _bem_panels(hull, counts, z_lid)
+    k = 2 ** len(planes)
+    n_hull = k * len(hf)
+    n_lid = k * len(lid_panels[1]) if lid_panels is not None else 0
+    layout = (f"{counts.n_length} from transom to stem, {counts.n_girth} keel to waterline, "
+              f"{counts.n_transom} across a transom" if isinstance(hull, CTVCatamaran) else
+              f"{counts.n_half_length} per half-length, {counts.n_girth} keel to waterline")
     notes = [
-        f"hull: two generalized Wigley demihulls L = {hull.length:g} m, b = {hull.demihull_beam:g} m, "
-        f"T = {hull.draft:g} m, separation {hull.separation:g} m, p = {hull.p:.4g} (C_b = {hull.block_coefficient:.4f}); "
-        f"mass {spec.total_mass:.6g} kg, CoG {tuple(round(float(c), 4) for c in spec.cog)} m, "
+        _hull_text(hull) + f"; mass {spec.total_mass:.6g} kg, CoG {tuple(round(float(c), 4) for c in spec.cog)} m, "
         f"I_cog {tuple(float(f'{i:.6g}') for i in spec.inertia_cog)} kg m²",
         *spec.notes,
-        f"mesh: {n_hull} hull panels ({counts.n_half_length} per half-length, {counts.n_girth} keel to waterline), "
+        f"mesh: {n_hull} hull panels ({layout}), "
         + (f"{n_lid} lid panels at z = {z_lid:.4g} m (irregular frequencies removed: sharp features in A, B, X "
            "are the waves trapped between the demihulls, physical in potential flow)"
            if z_lid is not None else "no lid (irregular frequencies not removed)")
-        + f"; quarter mesh with xOz and yOz symmetry; {spec.panels_per_wavelength():.1f} panels per shortest "
+        + f"; {'quarter mesh with xOz and yOz' if k == 4 else 'half mesh with xOz'} symmetry; "
+        f"{spec.panels_per_wavelength():.1f} panels per shortest "
         f"wavelength ({spec.shortest_wavelength:.3g} m at {spec.omega_max:g} rad/s)",
         f"frequencies: {omegas.size} from {omegas[0]:.4g} to {omegas[-1]:.4g} rad/s"
         + (f", Δω = {np.diff(omegas).mean():.4g} rad/s (IRFs resolved to π/Δω = {np.pi / np.diff(omegas).mean():.3g} s)"
@@ -336,8 +373,9 @@ def _notes(spec: VesselSpec, hull: WigleyCatamaran, counts: PanelCounts, z_lid, 
         f"directions: {spec.direction_step_deg:g}° steps; 0–180° solved, the rest mirrored "
         "(port/starboard symmetry, X_i(−β) = s_i X_i(β))",
     ]
-    if spec.lcg != 0.0:
-        notes.append(f"centre of gravity {spec.lcg:+g} m from the centre of buoyancy (midship): the real vessel "
+    xb = float(hull.centre_of_buoyancy[0])
+    if abs(spec.cog[0] - xb) > 1e-6 * hull.length:
+        notes.append(f"centre of gravity {spec.cog[0] - xb:+.4g} m from the centre of buoyancy: the real vessel "
                      "trims; the database is for the even-keel waterline, with the weight couplings in C")
     end, top = _decay(omegas, B[2, 2])
     notes.append(f"heave damping at ω_max: |B33(ω_max)| / max |B33| = {end:.3f}; largest in the top "
@@ -347,7 +385,9 @@ def _notes(spec: VesselSpec, hull: WigleyCatamaran, counts: PanelCounts, z_lid, 
                     "decays slowly, with wiggles from waves trapped between the demihulls)"))
     C_ref = hull.restoring(spec.rho, spec.g, spec.total_mass, spec.cog)
     rel = {n: (C[i, i] - C_ref[i, i]) / C_ref[i, i] for n, i in (("C33", 2), ("C44", 3), ("C55", 4))}
-    notes.append("hydrostatics: panel mesh vs closed form: volume "
+    if C_ref[2, 4] != 0.0:
+        rel["C35"] = (C[2, 4] - C_ref[2, 4]) / C_ref[2, 4]
+    notes.append(f"hydrostatics: panel mesh vs {'quadrature of the lines' if isinstance(hull, CTVCatamaran) else 'closed form'}: volume "
                  f"{(volume - hull.volume) / hull.volume:+.2%}, "
                  + ", ".join(f"{n} {r:+.2%}" for n, r in rel.items())
                  + f"; mass − ρ·volume = {spec.total_mass - spec.rho * volume:+.4g} kg (mesh discretisation)")
@@ -357,6 +397,9 @@ def _notes(spec: VesselSpec, hull: WigleyCatamaran, counts: PanelCounts, z_lid, 
 
 def build_from_file(path: str | Path, out_path: str | Path, progress: bool = True) -> HydroDB:
     """Build the database of the vessel file ``path`` and write it to ``out_path`` (BEMIO HDF5, atomic).
+
+    A vessel file with a ``[bem]`` table is not solved: its BEM output is read and given the file's mass
+    properties (:mod:`boatland.hydro.imported`).
 
     Returns
     -------
@@ -369,7 +412,10 @@ def build_from_file(path: str | Path, out_path: str | Path, progress: bool = Tru
         The vessel file has problems (all listed, with key paths).
     """
     from boatland.hydro.bemio import write_bemio
+    from boatland.hydro.imported import database_of
+    from boatland.model.imported import ImportedVesselSpec
 
-    db = build_database(load_vessel(path), progress=progress)
+    spec = load_vessel(path)
+    db = database_of(spec) if isinstance(spec, ImportedVesselSpec) else build_database(spec, progress=progress)
     write_bemio(db, out_path)
     return db

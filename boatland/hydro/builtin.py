@@ -1,9 +1,9 @@
 """The hydrodynamic databases shipped with boatland (``boatland/data/*.h5``).
 
-Both were made with :mod:`boatland.hydro.build` from the vessel files in ``scenarios/vessels/``
+All were made with :mod:`boatland.hydro.build` from the vessel files in ``scenarios/vessels/``
 (same name); their provenance notes say how (mesh, frequencies, checks). Rebuild one with::
 
-    boatland.hydro.build.build_from_file("scenarios/vessels/ctv24.toml", "boatland/data/ctv24.h5")
+    boatland hydro build scenarios/vessels/ctv27.toml -o boatland/data/ctv27.h5
 """
 
 from __future__ import annotations
@@ -18,8 +18,11 @@ __all__ = ["BUILTIN", "builtin_path", "load_builtin", "vessel_file"]
 
 #: Built-in database name → one-line description.
 BUILTIN: dict[str, str] = {
+    "ctv27": "27 m CTV catamaran after the published particulars of Incat Crowther's 27 m CTV class: transom "
+             "stern, hard-chine demihulls 25.5 × 2.7 × 1.71 m, 5.87 m apart, 132 t; sea water, deep; boatland's "
+             "default vessel",
     "ctv24": "generic full-scale 24 m CTV catamaran (two Wigley-type demihulls 24 × 2.8 × 1.4 m, 6.2 m apart, "
-             "90 t), sea water, deep; boatland's default vessel",
+             "90 t, fore–aft symmetric), sea water, deep; the first default",
     "model2": "TUHH tank-test catamaran 'Model 2' (Ferreira González 2023, TU Hamburg, Table 4.2: 2.13 m, 60 kg), model scale ~1:10, "
               "fresh water, deep",
 }

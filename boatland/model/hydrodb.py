@@ -178,6 +178,9 @@ class HydroDB:
         Source file, solver, dates, and notes on what readers changed.
     mesh : HullMesh, optional
         Wetted hull panels (stored by the builder; needed for pile diffraction).
+    topsides : HullMesh, optional
+        The hull above the waterline (topsides, deck, deckhouse) in the body frame, for the viewers
+        only (:mod:`boatland.record.scene`); no computation uses it.
     """
 
     omega: np.ndarray
@@ -199,6 +202,7 @@ class HydroDB:
     name: str = "vessel"
     provenance: Provenance = field(default_factory=Provenance)
     mesh: HullMesh | None = None
+    topsides: HullMesh | None = None
 
     def __post_init__(self):
         src = self.provenance.source or None

@@ -9,7 +9,7 @@ exported as a JSON Schema by :func:`json_schema`)::
     dt = 0.05                   # [s]; default min(0.05 s, Tp/100, fender contact period/20)
     seed = 1
     [vessel]
-    database = "ctv24"          # built-in name or a path relative to this file
+    database = "ctv27"          # built-in name or a path relative to this file
     # heading_deg, position: default bow on the landing, fender just touching the struts
     [landing]
     monopile_diameter = 6.5

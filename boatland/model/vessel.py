@@ -40,7 +40,29 @@ A vessel file (TOML, SI units, angles in ``_deg`` keys) says everything the Capy
     [directions]
     step_deg = 15.0            # solve 0..180°, mirror to 195..345° (port/starboard symmetry)
 
+A CTV hull with a transom stern (:mod:`boatland.model.ctv_hull`) is chosen with ``form = "ctv"``::
+
+    [hull]
+    form = "ctv"               # "wigley" (default) or "ctv"
+    length = 25.5              # waterline length, transom to stem [m]
+    demihull_beam = 2.7        # widest waterline beam of a demihull [m]
+    draft = 1.71               # at the keel [m]
+    separation = 5.87
+    section = "chine"          # or "round" (round bilge)
+    deadrise_deg = 26.0        # ... and the other form parameters of CTVCatamaran (defaults there)
+
+    [topsides]                 # above the waterline: drawn by the viewers, not in the BEM
+    freeboard = 2.4            # deck above the waterline [m]
+    tunnel_height = 1.6        # wet deck above the waterline [m]
+    flare_deg = 5.0
+    stem_rake_deg = 20.0
+    deckhouse = [-9.0, 1.0, 6.0, 2.6]   # x_aft, x_fwd, width, height [m]
+
+Its mass is ρ∇ of its lines unless ``inertia.mass`` is given, which must then match ρ∇ within 1 %
+(:data:`MASS_TOLERANCE`); ``inertia.lcg`` defaults to the centre of buoyancy (even keel).
+
 Reference point (body origin): midship, centreline, calm waterline; x forward, y to port, z up.
+(Midship is halfway between the transom and the waterline stem for the CTV form.)
 
 :func:`load_vessel` reports every problem of a file at once with its key path
 (:mod:`boatland.model.tomlspec`); constructing :class:`VesselSpec` directly runs the same checks.
@@ -55,11 +77,13 @@ from typing import Any
 
 import numpy as np
 
+from boatland.model.ctv_hull import SECTIONS, CTVCatamaran, CTVPanelCounts, ctv_form_problems
 from boatland.model.hull import CB_RANGE, PanelCounts, WigleyCatamaran, exponent_for_block_coefficient
 from boatland.model.hydrodb import rigid_body_mass_matrix
-from boatland.model.tomlspec import Key, Problems, SpecError, Table, parse_toml_file, validate
+from boatland.model.imported import ImportedVesselSpec, load_imported
+from boatland.model.tomlspec import Key, Problems, SpecError, Table, Vector, parse_toml_file, validate
 
-__all__ = ["VESSEL_SCHEMA", "VesselSpec", "load_vessel", "vessel_problems", "wavelength"]
+__all__ = ["FORMS", "MASS_TOLERANCE", "VESSEL_SCHEMA", "VesselSpec", "load_vessel", "vessel_problems", "wavelength"]
 
 #: Default mesh resolution: largest panel edge = shortest wavelength / this.
 DEFAULT_PANELS_PER_WAVELENGTH = 8.0
@@ -68,6 +92,17 @@ MIN_PANELS_PER_WAVELENGTH = 4.0
 #: Classic Wigley block coefficient (p = 2), used when neither mass nor C_b is given.
 WIGLEY_CB = 4.0 / 9.0
 MAX_FREQUENCIES = 2000
+#: Hull forms of the vessel file.
+FORMS = ("wigley", "ctv")
+#: A given mass of a CTV-form hull must equal ρ∇ of its lines within this fraction.
+MASS_TOLERANCE = 0.01
+#: Form parameters of the CTV hull: VesselSpec field → vessel-file key.
+CTV_HULL_KEYS = {n: f"hull.{n}" for n in (
+    "section", "deadrise_deg", "bow_deadrise_deg", "chine_beam", "bilge_exponent", "transom_beam",
+    "transom_draft", "max_beam_station", "keel_station", "forefoot_station", "entrance_deg")}
+CTV_TOPSIDE_KEYS = {n: f"topsides.{n}" for n in (
+    "freeboard", "tunnel_height", "flare_deg", "stem_rake_deg", "deckhouse")}
+CTV_KEYS = {**CTV_HULL_KEYS, **CTV_TOPSIDE_KEYS}
 
 
 def _water_depth(v):
@@ -83,15 +118,37 @@ VESSEL_SCHEMA = Table({
     "name": Key(str, required=True, doc="vessel name"),
     "description": Key(str, default="", doc="free text"),
     "hull": Table({
+        "form": Key(str, default="wigley", choices=FORMS,
+                    doc="hull form: two generalized Wigley demihulls, or CTV demihulls with a transom"),
         "length": Key(float, required=True, gt=0.0, doc="waterline length L of a demihull [m]"),
         "demihull_beam": Key(float, required=True, gt=0.0, doc="waterline beam b of one demihull [m]"),
         "draft": Key(float, required=True, gt=0.0, doc="draft T [m]"),
         "separation": Key(float, required=True, gt=0.0, doc="demihull centreline to centreline [m]"),
-        "block_coefficient": Key(float, gt=0.0, lt=1.0, doc="block coefficient of a demihull (without inertia.mass)"),
+        "block_coefficient": Key(float, gt=0.0, lt=1.0, doc="block coefficient of a demihull (Wigley form, "
+                                                           "without inertia.mass)"),
+        "section": Key(str, choices=SECTIONS, doc="CTV form: hard-chine or round-bilge sections"),
+        "deadrise_deg": Key(float, doc="CTV form: deadrise amidships and aft [deg]"),
+        "bow_deadrise_deg": Key(float, doc="CTV form: deadrise at the stem [deg]"),
+        "chine_beam": Key(float, doc="CTV form: chine half-breadth / waterline half-breadth"),
+        "bilge_exponent": Key(float, doc="CTV form: superellipse exponent of round-bilge sections"),
+        "transom_beam": Key(float, doc="CTV form: transom waterline breadth / demihull beam"),
+        "transom_draft": Key(float, doc="CTV form: transom immersion / draft"),
+        "max_beam_station": Key(float, doc="CTV form: widest waterline, fraction of L from the transom"),
+        "keel_station": Key(float, doc="CTV form: keel at full draft from here, fraction of L from the transom"),
+        "forefoot_station": Key(float, doc="CTV form: forefoot rises from here, fraction of L from the transom"),
+        "entrance_deg": Key(float, doc="CTV form: half-angle of entrance of the waterline [deg]"),
     }, required=True),
+    "topsides": Table({
+        "freeboard": Key(float, doc="deck above the waterline [m]"),
+        "tunnel_height": Key(float, doc="wet deck (tunnel roof) above the waterline [m]"),
+        "flare_deg": Key(float, doc="outward flare of the topsides [deg]"),
+        "stem_rake_deg": Key(float, doc="forward rake of the stem above the waterline [deg]"),
+        "deckhouse": Vector(size=4, names=("x_aft", "x_fwd", "width", "height"),
+                            doc="deckhouse box on the deck [m] (width 0: none)"),
+    }, optional=True, doc="CTV form: the hull above the waterline, for the viewers (not in the BEM)"),
     "inertia": Table({
         "mass": Key(float, gt=0.0, doc="vessel mass [kg]"),
-        "lcg": Key(float, default=0.0, doc="centre of gravity forward of midship [m]"),
+        "lcg": Key(float, doc="centre of gravity forward of midship [m]; default: above the centre of buoyancy"),
         "kg": Key(float, required=True, ge=0.0, doc="centre of gravity above the keel [m]"),
         **{f"r_{ax}": Key(float, gt=0.0, doc=f"radius of gyration about the CoG, {ax} [m]") for ax in ("xx", "yy", "zz")},
         **{f"i_{ax}": Key(float, gt=0.0, doc=f"moment of inertia about the CoG, {ax} [kg m²]") for ax in ("xx", "yy", "zz")},
@@ -132,7 +189,8 @@ FIELD_KEYS = {
     "n_lid": "mesh.n_lid", "lid": "mesh.lid",
     "omega_min": "frequencies.omega_min", "omega_max": "frequencies.omega_max",
     "n_omega": "frequencies.n", "d_omega": "frequencies.d_omega",
-    "direction_step_deg": "directions.step_deg",
+    "direction_step_deg": "directions.step_deg", "form": "hull.form",
+    **CTV_KEYS,
 }
 
 
@@ -163,7 +221,9 @@ class VesselSpec:
     total_mass : float
         Vessel mass [kg] (given, or ρ × the hull's displaced volume).
     cb : float
-        Block coefficient of a demihull (from the mass, given, or 4/9).
+        Block coefficient of a demihull (Wigley: from the mass, given, or 4/9; CTV: of its lines).
+    lcg_resolved : float
+        Centre of gravity forward of midship [m] (given, or the centre of buoyancy's).
     inertia_cog : ndarray, shape (3,)
         Principal moments of inertia about the CoG, I_xx, I_yy, I_zz [kg m²].
     notes : tuple of str
@@ -181,7 +241,7 @@ class VesselSpec:
     description: str = ""
     block_coefficient: float | None = None
     mass: float | None = None
-    lcg: float = 0.0
+    lcg: float | None = None
     r_xx: float | None = None
     r_yy: float | None = None
     r_zz: float | None = None
@@ -199,10 +259,28 @@ class VesselSpec:
     n_omega: int | None = None
     d_omega: float | None = None
     direction_step_deg: float = 15.0
+    form: str = "wigley"
+    section: str | None = None
+    deadrise_deg: float | None = None
+    bow_deadrise_deg: float | None = None
+    chine_beam: float | None = None
+    bilge_exponent: float | None = None
+    transom_beam: float | None = None
+    transom_draft: float | None = None
+    max_beam_station: float | None = None
+    keel_station: float | None = None
+    forefoot_station: float | None = None
+    entrance_deg: float | None = None
+    freeboard: float | None = None
+    tunnel_height: float | None = None
+    flare_deg: float | None = None
+    stem_rake_deg: float | None = None
+    deckhouse: tuple | None = None
     source: str = ""
 
     total_mass: float = field(init=False, repr=False)
     cb: float = field(init=False, repr=False)
+    lcg_resolved: float = field(init=False, repr=False)
     inertia_cog: np.ndarray = field(init=False, repr=False)
     notes: tuple[str, ...] = field(init=False, repr=False)
 
@@ -215,6 +293,14 @@ class VesselSpec:
         object.__setattr__(self, "water_depth", float(self.water_depth))
         object.__setattr__(self, "total_mass", mass)
         object.__setattr__(self, "cb", cb)
+        if self.lcg is None:
+            lcg = float(_make_hull(values, cb).centre_of_buoyancy[0])
+            if self.form == "ctv":
+                notes.append(f"lcg not given: {lcg:+.4g} m, above the centre of buoyancy (the vessel floats on "
+                             "even keel)")
+        else:
+            lcg = float(self.lcg)
+        object.__setattr__(self, "lcg_resolved", lcg)
         inertia = np.array(inertia, dtype=float)
         inertia.setflags(write=False)
         object.__setattr__(self, "inertia_cog", inertia)
@@ -222,15 +308,15 @@ class VesselSpec:
 
     # ------------------------------------------------------------------ derived
     @property
-    def hull(self) -> WigleyCatamaran:
-        """The hull form (generalized Wigley demihulls with this spec's block coefficient)."""
-        return WigleyCatamaran.from_block_coefficient(self.length, self.demihull_beam, self.draft,
-                                                      self.separation, self.cb)
+    def hull(self) -> WigleyCatamaran | CTVCatamaran:
+        """The hull form: generalized Wigley demihulls with this spec's block coefficient, or the CTV
+        demihulls of :mod:`boatland.model.ctv_hull` with this spec's form parameters."""
+        return _make_hull({f.name: getattr(self, f.name) for f in fields(self) if f.init}, self.cb)
 
     @property
     def cog(self) -> np.ndarray:
         """Centre of gravity in the body frame (origin midship, centreline, waterline) [m]."""
-        return np.array([self.lcg, 0.0, self.kg - self.draft])
+        return np.array([self.lcg_resolved, 0.0, self.kg - self.draft])
 
     @property
     def radii_of_gyration(self) -> np.ndarray:
@@ -263,8 +349,9 @@ class VesselSpec:
         """Wavelength at ω_max [m] (finite-depth dispersion when the depth is finite)."""
         return wavelength(self.omega_max, self.g, self.water_depth)
 
-    def panel_counts(self) -> PanelCounts:
-        """Quarter-mesh panel counts from ``panel_size`` or the explicit counts (default: λ_min / 8)."""
+    def panel_counts(self) -> PanelCounts | CTVPanelCounts:
+        """Panel counts (Wigley: quarter mesh; CTV: half mesh) from ``panel_size`` or the explicit counts
+        (default: λ_min / 8)."""
         return _panel_counts(self.hull, self.shortest_wavelength, self.panel_size, self.n_length,
                              self.n_girth, self.n_lid)
 
@@ -286,11 +373,36 @@ def _omegas(omega_min, omega_max, n, d_omega) -> np.ndarray:
     return omega_min + d_omega * np.arange(k + 1)
 
 
+def _ctv_params(v: dict) -> dict[str, Any]:
+    """The CTV form parameters given in ``v`` (the others take CTVCatamaran's defaults)."""
+    out = {k: v[k] for k in CTV_KEYS if v.get(k) is not None}
+    if "deckhouse" in out:
+        out["deckhouse"] = tuple(out["deckhouse"])
+    return out
+
+
+def _make_hull(v: dict, cb: float | None = None) -> WigleyCatamaran | CTVCatamaran:
+    """The hull of inputs ``v`` (``cb``: the Wigley form's block coefficient)."""
+    if v.get("form", "wigley") == "ctv":
+        return CTVCatamaran(v["length"], v["demihull_beam"], v["draft"], v["separation"], **_ctv_params(v))
+    return WigleyCatamaran.from_block_coefficient(v["length"], v["demihull_beam"], v["draft"], v["separation"], cb)
+
+
 def _resolve(v: dict) -> tuple[float, float, tuple[float, float, float], list[str]]:
     """Block coefficient, mass, inertias and notes from validated inputs."""
     notes: list[str] = []
     L, b, T, rho = v["length"], v["demihull_beam"], v["draft"], v["rho"]
-    if v.get("mass") is not None:
+    if v.get("form", "wigley") == "ctv":
+        hs = _make_hull(v).hydrostatics()
+        cb, mass = hs.block_coefficient, rho * hs.volume
+        if v.get("mass") is not None:
+            notes.append(f"mass {v['mass']:.6g} kg given; ρ∇ of the lines = {mass:.6g} kg "
+                         f"({(v['mass'] - mass) / mass:+.2%})")
+            mass = float(v["mass"])
+        else:
+            notes.append(f"mass = ρ∇ of the lines = {mass:.6g} kg (∇ = {hs.volume:.5g} m³, C_b = {cb:.4f}, "
+                         f"C_m = {hs.midship_coefficient:.4f})")
+    elif v.get("mass") is not None:
         mass = float(v["mass"])
         cb = mass / (rho * 2.0 * L * b * T)
         notes.append(f"block coefficient C_b = {cb:.4f} of each demihull from the mass "
@@ -360,10 +472,27 @@ def vessel_problems(v: dict[str, Any], rejected: frozenset[str] | set[str] = fro
     if has("length", "demihull_beam") and v["demihull_beam"] >= v["length"] / 2:
         add("demihull_beam", f"{v['demihull_beam']:g} m is not slender (length {v['length']:g} m): "
                              "a demihull needs beam < length / 2")
-    if has("mass", "block_coefficient"):
+    form = v.get("form") or "wigley"
+    if form not in FORMS:
+        add("form", f"must be one of {', '.join(FORMS)}, got {form!r}")
+        form = None
+    if form == "wigley":
+        for name in CTV_KEYS:
+            if v.get(name) is not None:
+                add(name, 'only for hull.form = "ctv" (the Wigley form has no such parameter)')
+    elif form == "ctv":
+        if has("block_coefficient"):
+            add("block_coefficient", 'only for hull.form = "wigley": the lines of the CTV form set its '
+                                     "block coefficient (give inertia.mass, or nothing: ρ∇)")
+        # (length, beams and separation are checked below for both forms)
+        for name, msg in ctv_form_problems({k: v.get(k) for k in ("length", "demihull_beam", "draft",
+                                                                   "separation", *CTV_KEYS)}):
+            if name in CTV_KEYS:
+                add(name, msg)
+    if form == "wigley" and has("mass", "block_coefficient"):
         add("block_coefficient", "give either inertia.mass or hull.block_coefficient, not both "
                                  "(the mass sets the block coefficient)")
-    elif has("length", "demihull_beam", "draft") and rho is not None:
+    elif form == "wigley" and has("length", "demihull_beam", "draft") and rho is not None:
         L, b, T = v["length"], v["demihull_beam"], v["draft"]
         if has("mass"):
             cb, name = v["mass"] / (rho * 2 * L * b * T), "mass"
@@ -387,11 +516,22 @@ def vessel_problems(v: dict[str, Any], rejected: frozenset[str] | set[str] = fro
               and not {f"r_{ax}", f"i_{ax}"} & set(rejected)):
             add(f"r_{ax}", f"missing: give inertia.r_{ax} (radius of gyration about the CoG, m) "
                            f"or inertia.i_{ax} (kg m²)")
+    if not out and form == "ctv" and has("mass", "length", "demihull_beam", "draft", "separation") \
+            and rho is not None:
+        hull = _make_hull(v)
+        m_lines = rho * hull.volume
+        if abs(v["mass"] - m_lines) > MASS_TOLERANCE * m_lines:
+            T_match = _matching_draft(v, rho)
+            add("mass", f"{v['mass']:g} kg differs from ρ∇ = {m_lines:.6g} kg of the hull's lines at "
+                        f"hull.draft = {v['draft']:g} m by {(v['mass'] - m_lines) / m_lines:+.1%} (more than "
+                        f"{MASS_TOLERANCE:.0%}): a floating vessel displaces its mass"
+                        + (f"; these form parameters displace it at hull.draft = {T_match:.4g} m" if T_match else "")
+                        + " — or leave inertia.mass out (mass = ρ∇)")
     if not out and has("length", "demihull_beam", "draft", "separation", "kg") and rho is not None and g is not None:
         cb, mass, inertia, _ = _resolve({**v, "rho": rho})
-        hull = WigleyCatamaran.from_block_coefficient(v["length"], v["demihull_beam"], v["draft"],
-                                                      v["separation"], cb)
-        C = hull.restoring(rho, g, mass, (v.get("lcg") or 0.0, 0.0, v["kg"] - v["draft"]))
+        hull = _make_hull(v, cb)
+        lcg = v["lcg"] if v.get("lcg") is not None else float(hull.centre_of_buoyancy[0])
+        C = hull.restoring(rho, g, mass, (lcg, 0.0, v["kg"] - v["draft"]))
         for i, what in ((3, "roll"), (4, "pitch")):
             if C[i, i] <= 0:
                 gm = C[i, i] / (mass * g)
@@ -408,7 +548,7 @@ def vessel_problems(v: dict[str, Any], rejected: frozenset[str] | set[str] = fro
     # --- mesh
     if has("panel_size") and (has("n_length") or has("n_girth") or has("n_lid")):
         add("panel_size", "give either mesh.panel_size or the panel counts (n_length, n_girth, n_lid), not both")
-    if has("n_length") and v["n_length"] % 2:
+    if has("n_length") and v["n_length"] % 2 and form == "wigley":
         add("n_length", f"must be even (the mesh has fore–aft symmetry), got {v['n_length']}")
     if (has("n_girth") or has("n_lid")) and not has("n_length"):
         add("n_length", "missing: give mesh.n_length with mesh.n_girth / mesh.n_lid")
@@ -450,11 +590,29 @@ def vessel_problems(v: dict[str, Any], rejected: frozenset[str] | set[str] = fro
     return out
 
 
-def _panel_counts(hull: WigleyCatamaran, shortest_wavelength: float, panel_size, n_length, n_girth, n_lid) -> PanelCounts:
+def _matching_draft(v: dict, rho: float) -> float | None:
+    """The draft at which the CTV form parameters of ``v`` displace ``v["mass"]`` (bisection), or None."""
+    def mass_at(T):
+        return rho * _make_hull({**v, "draft": T}).volume
+    lo, hi = 0.2 * v["draft"], 5.0 * v["draft"]
+    try:
+        if not mass_at(lo) < v["mass"] < mass_at(hi):
+            return None
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (mid, hi) if mass_at(mid) < v["mass"] else (lo, mid)
+    except ValueError:   # the form parameters do not hold at some draft (e.g. the tunnel above the deck)
+        return None
+    return 0.5 * (lo + hi)
+
+
+def _panel_counts(hull, shortest_wavelength: float, panel_size, n_length, n_girth, n_lid):
     """Panel counts from explicit counts (missing ones from the default size) or from a panel size."""
     default = hull.panel_counts(panel_size or shortest_wavelength / DEFAULT_PANELS_PER_WAVELENGTH)
     if n_length is None:
         return default
+    if isinstance(hull, CTVCatamaran):
+        return hull.counts_from(n_length, n_girth, n_lid, default)
     n_girth = n_girth if n_girth is not None else default.n_girth
     n_lid = n_lid if n_lid is not None else max(1, round(n_girth * hull.demihull_beam / hull.midship_girth()))
     return PanelCounts(n_length // 2, n_girth, n_lid)
@@ -463,7 +621,7 @@ def _panel_counts(hull: WigleyCatamaran, shortest_wavelength: float, panel_size,
 def _mesh_resolution(v: dict, rho: float, g: float) -> tuple[float, float, float]:
     """(panels per shortest wavelength, shortest wavelength, largest panel edge) of inputs ``v``."""
     cb, _, _, _ = _resolve({**v, "rho": rho})
-    hull = WigleyCatamaran.from_block_coefficient(v["length"], v["demihull_beam"], v["draft"], v["separation"], cb)
+    hull = _make_hull(v, cb)
     depth = v.get("water_depth")
     lam = wavelength(v["omega_max"], g, float(depth) if isinstance(depth, (int, float)) else math.inf)
     counts = _panel_counts(hull, lam, v.get("panel_size"), v.get("n_length"), v.get("n_girth"), v.get("n_lid"))
@@ -471,8 +629,10 @@ def _mesh_resolution(v: dict, rho: float, g: float) -> tuple[float, float, float
     return lam / hmax, lam, hmax
 
 
-def load_vessel(path: str | Path) -> VesselSpec:
-    """Read and validate a vessel file.
+def load_vessel(path: str | Path) -> "VesselSpec | ImportedVesselSpec":
+    """Read and validate a vessel file: a hull to build (``[hull]``, a :class:`VesselSpec`) or BEM output
+    to import with its mass properties (``[bem]``, an
+    :class:`~boatland.model.imported.ImportedVesselSpec`).
 
     Raises
     ------
@@ -481,7 +641,19 @@ def load_vessel(path: str | Path) -> VesselSpec:
     """
     path = Path(path)
     problems = Problems(path)
-    data = validate(parse_toml_file(path), VESSEL_SCHEMA, problems)
+    raw = parse_toml_file(path)
+    if "bem" in raw:
+        if "hull" in raw:
+            problems.add("hull", "give either [hull] (a hull boatland builds with Capytaine) or [bem] (BEM output "
+                                 "to import), not both")
+            problems.raise_if_any()
+        spec = load_imported(raw, path, problems)
+        problems.raise_if_any()
+        return spec
+    data = validate(raw, VESSEL_SCHEMA, problems)
+    problems.items = [(k, "missing table: give [hull] (a hull boatland builds with Capytaine) or [bem] (BEM output "
+                          "to import, with its mass properties)") if (k, m) == ("hull", "missing table") else (k, m)
+                      for k, m in problems.items]
     kwargs = _flatten(data)
     rejected = {name for name, key in FIELD_KEYS.items() if problems.has(key)}
     for key, msg in vessel_problems(kwargs, rejected):
@@ -503,4 +675,6 @@ def _flatten(data: dict) -> dict[str, Any]:
     wd = out.get("water_depth")
     if isinstance(wd, str):
         out["water_depth"] = math.inf
+    if "deckhouse" in out:
+        out["deckhouse"] = tuple(out["deckhouse"])
     return out

@@ -1,5 +1,5 @@
-r"""Monte Carlo campaigns of the default landing (our vessel, read from ``scenarios/ctv_landing.toml`` so
-these cases follow the default vessel): Grøtting's (2015) heading, period, wave-height and thrust trends,
+r"""Monte Carlo campaigns of the Wigley ctv24's landing (read from ``scenarios/ctv24_landing.toml`` so
+these cases stay on the vessel their committed figures were measured on): Grøtting's (2015) heading, period, wave-height and thrust trends,
 and the frequency-domain screening against the time domain.
 
 Grøtting, H. (2015), *Small Water Plane Area Solutions for Access of Offshore Wind Turbines*, MSc thesis,
@@ -118,12 +118,24 @@ def hs_at_probability(scenario, db, p: float, *, access: float, Tp: float, headi
     return round(max(step, round(hs / step) * step), 6)
 
 
+#: The landing these campaigns and their committed figures were measured on: the Wigley ctv24 at 80 kN
+#: (the first default; the default trial is now ctv27's ``ctv_landing.toml``).
+VALIDATION_SCENARIO = "ctv24_landing.toml"
+
+
+def validation_scenario_path() -> Path:
+    """The shipped :data:`VALIDATION_SCENARIO` (``boatland/scenarios/``)."""
+    from boatland.resources import shipped_scenarios
+
+    return shipped_scenarios() / VALIDATION_SCENARIO
+
+
 def _default():
-    from boatland.scenario_check import default_scenario_path, load_checked
+    from boatland.scenario_check import load_checked
 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        path = default_scenario_path()
+        path = validation_scenario_path()
         scenario, db, _ = load_checked(path)
     return path, scenario, db
 
@@ -278,9 +290,7 @@ def fd_vs_td_campaign(folder: Path, heading: float, hs, *, seeds: int = 24, scen
     """The campaign of the screening-vs-Monte-Carlo comparison: the default scenario at Tp 7 s and relative
     heading ``heading``, H_s over ``hs``, ``seeds`` trials per case of 30 min, master seed 2026."""
     if scenario is None:
-        from boatland.scenario_check import default_scenario_path
-
-        scenario = default_scenario_path()
+        scenario = validation_scenario_path()
     return write_campaign(Path(folder) / f"fd_vs_td_{heading:g}.toml", f"fd_vs_td_{heading:g}", scenario,
                           seeds=seeds, master_seed=2026, duration=FD_TD_ACCESS,
                           set_={"sea.Tp": FD_TD_TP, "sea.relative_direction_deg": float(heading)},
@@ -346,12 +356,12 @@ CASES = [
          "NTNU: Table 4.10 (head seas far more robust than quartering and beam seas), Table 4.11 (in head seas the "
          "first slip comes later at longer T_p), Tables 4.14–4.15 and §5.1.1 (incidents rise with H_s and fall "
          "with the bollard push). His vessel is not ours: the *trends* are compared, not the times.",
-         "Monte Carlo campaigns of the default scenario (`scenarios/ctv_landing.toml`, its vessel), 10-min "
+         "Monte Carlo campaigns of the first default scenario (`scenarios/ctv24_landing.toml`, the Wigley ctv24), 10-min "
          "accesses, state-space radiation, common wave seeds across cases; H_s where the screening gives "
          "P = 0.5 per 10 min in head seas at T_p 7 s.",
          "ordering of the mean time to the first slip (no slip counted at the access's end) and of P(slip)",
          "oblique < ½ × head; ordered as the thesis", run_trends,
-         scenario_files=("ctv_landing.toml",),
+         scenario_files=(VALIDATION_SCENARIO,),
          quick="the heading trend only, 4 seeds, 5-min accesses (full: headings, periods, H_s × thrust; 6–8 seeds, 10 min)",
          cite="Grøtting (2015), Tables 4.10, 4.11, 4.14"),
     Case("screening-vs-monte-carlo", "Frequency-domain screening vs time-domain Monte Carlo",
@@ -363,7 +373,7 @@ CASES = [
          "which stores the screening's P of the same contacts, pile diffraction and preload beside its cases).",
          "whether the screening's P lies inside the Clopper–Pearson 95 % interval of the trials' P",
          "inside the 95 % interval", run_fd_vs_td,
-         scenario_files=("ctv_landing.toml",),
+         scenario_files=(VALIDATION_SCENARIO,),
          quick="head seas, one H_s (P = 0.5), 12 seeds (full: 3 headings × 2 H_s × 24 seeds)",
          cite="Wu (2014); Grøtting (2015), Tables 4.14–4.15"),
 ]

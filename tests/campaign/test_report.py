@@ -56,7 +56,7 @@ def test_report_figures_have_units_legends_and_the_inputs(small_store):
     for fig in (figure_p_vs_hs(dec), figure_time_to_incident(read_store(store), dec)):
         ax = fig.axes[0]
         assert _units(ax.get_xlabel()) and _units(ax.get_ylabel())
-        for word in ("small", "Tp 7 s", "push 80 kN", "μ_s 0.6", "3 seeds per case", "6 s access"):
+        for word in ("small", "Tp 7 s", "push 150 kN", "μ_s 0.8", "3 seeds per case", "6 s access"):
             assert word in ax.get_title(), (word, ax.get_title())
         labels = [t.get_text() for leg in fig.legends + [a.get_legend() for a in fig.axes if a.get_legend()]
                   for t in leg.get_texts()]
@@ -65,7 +65,7 @@ def test_report_figures_have_units_legends_and_the_inputs(small_store):
     ax = fig.axes[0]
     assert ax.get_theta_offset() == pytest.approx(1.5 * np.pi) and ax.get_theta_direction() == 1  # 180° at the top
     texts = [t.get_text() for t in fig.findobj(lambda o: hasattr(o, "get_text"))]
-    assert any("limiting Hs [m]" in t for t in texts) and "push 80 kN" in ax.get_title()
+    assert any("limiting Hs [m]" in t for t in texts) and "push 150 kN" in ax.get_title()
 
 
 def test_store_as_xarray(small_store):
@@ -81,7 +81,7 @@ def test_store_as_xarray(small_store):
     assert p.dims == ("Hs", "heading") and p.shape == (2, 2)
     row = ds.sel(case=int(ds.case[(ds.Hs == 0.6) & (ds.heading == 135.0)][0]))
     assert float(p.sel(Hs=0.6, heading=135.0)) == float(row.P.sel(incident="slip > 0.1 m"))
-    assert json.loads(ds.attrs["inputs"])["thrust"] == 80e3
+    assert json.loads(ds.attrs["inputs"])["thrust"] == 150e3
     with contextlib.redirect_stdout(io.StringIO()):
         files = write_report(store, store.parent / "rep2", figures=False)
     assert all(f.suffix in (".md", ".csv") for f in files)

@@ -2,10 +2,14 @@
 refusals before any work, and the run's verdict output."""
 
 import json
+from pathlib import Path
 
 import pytest
 
 from boatland.cli import main
+
+#: The first default landing (ctv24, 80 kN, Hs 1.5 m): it slips within 45 s, which these tests need.
+CTV24_LANDING = str(Path(__file__).resolve().parents[2] / "scenarios" / "ctv24_landing.toml")
 
 SCENARIO_CHECK_KEYS = {"file", "ok", "scenario", "summary", "inputs", "problems", "warnings", "notes"}
 
@@ -38,7 +42,7 @@ def test_output_in_a_missing_folder_is_refused_before_the_run(tmp_path, capsys):
 def test_scenario_check_json(repo_root, tmp_path, capsys):
     assert main(["scenario", "check", str(repo_root / "scenarios" / "ctv_landing.toml"), "--json"]) == 0
     out = json.loads(capsys.readouterr().out)
-    assert set(out) == SCENARIO_CHECK_KEYS and out["ok"] and out["inputs"]["Hs"] == 1.5
+    assert set(out) == SCENARIO_CHECK_KEYS and out["ok"] and out["inputs"]["Hs"] == 0.4
     bad = tmp_path / "bad.toml"
     bad.write_text("[sea]\nkind = 'jonswap'\nHs = -1\nTp = 7\n")
     assert main(["scenario", "check", str(bad), "--json"]) == 2
@@ -49,7 +53,7 @@ def test_scenario_check_json(repo_root, tmp_path, capsys):
 def test_hydro_list_json(capsys):
     assert main(["hydro", "list", "--json"]) == 0
     out = json.loads(capsys.readouterr().out)
-    assert [d["name"] for d in out] == ["ctv24", "model2"] and all(d["file"].endswith(".h5") for d in out)
+    assert [d["name"] for d in out] == ["ctv27", "ctv24", "model2"] and all(d["file"].endswith(".h5") for d in out)
     assert "seed 00" not in json.dumps(out)
 
 
@@ -57,20 +61,20 @@ def test_screen_json_keeps_the_own_sea_probability(capsys):
     assert main(["screen", "--tp", "6", "8", "2", "--directions", "2", "--json"]) == 0
     out = json.loads(capsys.readouterr().out)
     own = out["own_sea"]
-    assert own["parts"] == [{"kind": "jonswap", "Hs": 1.5, "Tp": 7.0, "relative_direction_deg": 180.0}]
+    assert own["parts"] == [{"kind": "jonswap", "Hs": 0.4, "Tp": 7.0, "relative_direction_deg": 180.0}]
     assert 0 <= own["p_access"] <= 1 and own["margins"]
     assert main(["screen", "--tp", "6", "8", "2", "--directions", "2"]) == 0
     assert f"incident probability {own['p_access']:.3g} per access" in capsys.readouterr().out
 
 
 def test_run_prints_the_verdict_first_and_json_has_events(capsys, tmp_path):
-    assert main(["run", "--duration", "45", "--no-log"]) == 0
+    assert main(["run", CTV24_LANDING, "--duration", "45", "--no-log"]) == 0
     out = capsys.readouterr().out.splitlines()
     assert out[0].startswith("SLIPPED at t = ") and "JONSWAP Hs 1.5 m, Tp 7 s" in out[0] and "push 80 kN" in out[0]
     assert not [ln for ln in out if "e-" in ln]                   # no 1.2e-05 kN, no 3e-15 m
     assert not [ln for ln in out if "contact 0:" in ln]           # a symmetric landing: "contacts 0+1"
     assert "settling events hidden: --events all" in "\n".join(out)
-    assert main(["run", "--duration", "45", "--no-log", "--json", "--events", "all"]) == 0
+    assert main(["run", CTV24_LANDING, "--duration", "45", "--no-log", "--json", "--events", "all"]) == 0
     rep = json.loads(capsys.readouterr().out)
     assert rep["verdict"]["outcome"] == "slipped" and rep["inputs"]["thrust"] == 80e3
     assert rep["events"][0]["settling"] and rep["events"][0]["contacts"] == [0, 1]

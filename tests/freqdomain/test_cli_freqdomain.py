@@ -84,8 +84,8 @@ def test_operability_sum_far_from_1_warns_and_runs(tmp_path):
 
 
 def test_fender_point_outside_the_hull_exit_2(tmp_path):
-    text = SCENARIO.read_text().replace("points = [[12.3, 0.75, 1.5], [12.3, -0.75, 1.5]]",
-                                        "points = [[12.3, 0.75, 1.5], [12.3, -9.75, 1.5]]")
+    text = SCENARIO.read_text().replace("points = [[13.84, 0.75, 1.9], [13.84, -0.75, 1.9]]",
+                                        "points = [[13.84, 0.75, 1.9], [13.84, -9.75, 1.9]]")
     assert "-9.75" in text
     bad = tmp_path / "aft.toml"
     bad.write_text(text)

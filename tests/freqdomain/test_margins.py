@@ -16,12 +16,13 @@ from boatland.scenario_check import load, resolve_database
 from boatland.trial.simulate import exposure_start
 
 REPO = __import__("pathlib").Path(__file__).resolve().parents[2]
+CTV24_LANDING = REPO / "scenarios" / "ctv24_landing.toml"   # the figures' vessel (the first default)
 
 
 def margins(hs, rel, access, directions=16, kappa=0.3):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        sc = load(REPO / "scenarios" / "ctv_landing.toml").replace(
+        sc = load(CTV24_LANDING).replace(
             {"sea.Hs": hs, "sea.relative_direction_deg": rel})
         sc = sc.replace({"simulation.duration": exposure_start(sc) + 30.0 + access})
         db = resolve_database(sc)
@@ -129,7 +130,7 @@ def test_one_margin_tracks_rice_where_the_screening_assumes_it(gamma):
 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        sc = load(REPO / "scenarios" / "ctv_landing.toml").replace({"sea.Hs": 0.16, "sea.gamma": gamma})
+        sc = load(CTV24_LANDING).replace({"sea.Hs": 0.16, "sea.gamma": gamma})
         sc = sc.replace({"simulation.duration": exposure_start(sc) + 30.0 + 1800.0})
         db = resolve_database(sc)
         dt, n = sc.time_step(db), sc.n_steps(db)

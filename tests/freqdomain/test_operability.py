@@ -27,7 +27,7 @@ def fine_scatter():
 
 
 def test_availability_grows_with_mu_times_thrust(landing, fine_scatter):
-    """Grøtting 2015 Table 4.2: availability depends strongly on μ·F_b. Measured on the default CTV
+    """Grøtting 2015 Table 4.2: availability depends strongly on μ·F_b. Measured on ctv24's landing
     (each contact on its own, the compliant fender, the pile's scattered wave; all headings): 0.255 (48 kN),
     0.358 (64 kN), 0.559 (120 kN), 0.741 (200 kN)."""
     db, s = landing

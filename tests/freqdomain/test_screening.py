@@ -1,5 +1,5 @@
 """Wu (2014) slip screening (boatland.freqdomain.screening) on the built-in CTV (ctv24,
-scenarios/ctv_landing.toml): sign conventions against the hinge reactions, static capacities, the
+scenarios/ctv24_landing.toml): sign conventions against the hinge reactions, static capacities, the
 limiting-Hs root, monotonicity in μ and thrust (seed 002 §4.1.1), bad input."""
 
 from __future__ import annotations

@@ -181,7 +181,7 @@ def test_single_direction_is_exact_only(full):
 # ---------------------------------------------------------------------------------------- scenario check
 @pytest.fixture(scope="module")
 def scenario(repo_root):
-    return load_scenario(repo_root / "scenarios" / "ctv_landing.toml")
+    return load_scenario(repo_root / "scenarios" / "ctv24_landing.toml")   # the landing of the ctv24 twins
 
 
 def test_scenario_check_names_the_direction_key(scenario, asymmetric, half, full):

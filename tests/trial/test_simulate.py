@@ -1,4 +1,4 @@
-"""One landing trial end to end on the built-in CTV (scenarios/ctv_landing.toml)."""
+"""One landing trial end to end on the Wigley CTV (scenarios/ctv24_landing.toml)."""
 
 import numpy as np
 import pytest

@@ -15,7 +15,7 @@ from boatland.campaign.runner import completed
 from boatland.validation.campaigns import TRENDS_SET, mean_first_time, run_study, write_campaign
 from boatland.validation.campaigns import p_incident as _p_incident
 
-BASE = Path(__file__).resolve().parents[2] / "scenarios" / "ctv_landing.toml"
+BASE = Path(__file__).resolve().parents[2] / "scenarios" / "ctv24_landing.toml"   # the figures' vessel (the first default)
 
 
 def study(tmp_path, axes: dict, name: str):

@@ -1,5 +1,5 @@
 """ISEE against brute force: the time domain's P(first slip within the access) of the default CTV
-(scenarios/ctv_landing.toml) in head and in beam seas, estimated by importance sampling of elementary
+(scenarios/ctv24_landing.toml, the first default) in head and in beam seas, estimated by importance sampling of elementary
 events (Au & Beck 2001; boatland.campaign.isee) and by ≥ 2000 plain time-domain trials on Gaussian seas of
 the same spectrum (the same grid, u ~ N(0, I)) — where brute force is affordable, p ≈ 0.1 and 0.01.
 
@@ -43,7 +43,7 @@ def campaign(tmp_path, name, direction, hs):
     path = tmp_path / f"{name}.toml"
     path.write_text(f"""
 name = "{name}"
-scenario = "{REPO / 'scenarios' / 'ctv_landing.toml'}"
+scenario = "{REPO / 'scenarios' / 'ctv24_landing.toml'}"
 method = "isee"
 master_seed = 2026
 duration = 60.0

@@ -4,7 +4,8 @@ normal and shear springs equals the time domain's in a beam sea.
 Two rigidly stuck contacts 1.5 m apart would lock roll (σ_roll = 0 in both domains, the roll moment
 taken by opposite vertical stick forces); Ferreira González (2023, §5.2.3) saw the tank model roll while
 its soft fender stuck, and Grøtting (2015, §3.2.2) models the fender's shear stiffness (3000 kN/m, after
-Wu 2014). The default CTV (scenarios/ctv_landing.toml) in a JONSWAP sea Hs 0.04 m, Tp 7 s, beam on
+Wu 2014). The Wigley CTV on its landing (scenarios/ctv24_landing.toml, the first default, on which the figures
+below were measured) in a JONSWAP sea Hs 0.04 m, Tp 7 s, beam on
 (90°): stuck throughout, so the time domain is the linear system of the frequency domain.
 
 Time domain: four wave seeds × 1800 s of full sea (after the settling and the waves' start-up ramp),
@@ -23,15 +24,18 @@ import pytest
 from boatland.campaign.plan import trial_seed
 from boatland.contact.fender import STICK
 from boatland.freqdomain.screening import LandingSetup, landed_response
-from boatland.scenario_check import default_scenario_path, load_checked
+from pathlib import Path
+
+from boatland.scenario_check import load_checked
 from boatland.trial.simulate import exposure_start, prepare_memory, simulate
 
 HS, TP, BETA, ACCESS, SEEDS = 0.04, 7.0, 90.0, 1800.0, 4
+CTV24_LANDING = Path(__file__).resolve().parents[2] / "scenarios" / "ctv24_landing.toml"   # the figures' vessel
 
 
 @pytest.fixture(scope="module")
 def beam():
-    sc, db, _ = load_checked(default_scenario_path())
+    sc, db, _ = load_checked(CTV24_LANDING)
     s = sc.replace({"sea.Hs": HS, "sea.Tp": TP, "sea.relative_direction_deg": BETA})
     return s.replace({"simulation.duration": exposure_start(s) + ACCESS}), db
 

@@ -3,7 +3,7 @@ contact forces in a JONSWAP sea equal the spectral integrals of the hinge-reacti
 :math:`\\sigma^2 = \\int_0^\\infty |\\hat J(\\omega)|^2 S(\\omega)\\,d\\omega` (seed 002 eq. 3.29–3.32) —
 the quantity the Wu screening is built on (boatland.freqdomain.screening).
 
-Time domain: scenarios/ctv_landing.toml (ctv24, two contacts, 80 kN, head seas, Tp 7 s) with Hs 0.1 m
+Time domain: scenarios/ctv24_landing.toml (ctv24, the first default, two contacts, 80 kN, head seas, Tp 7 s) with Hs 0.1 m
 and μ_s = μ_k = 2, k_v = 0 so the fender never slips (the linear stuck case), 1800 s, seeds 1 and 2;
 statistics of the summed normal and vertical contact forces after t = 100 s (thrust ramp 20 s, wave ramp
 2 Tp, state-space radiation memory). Frequency domain: the landed vessel with the same contacts
@@ -24,17 +24,20 @@ import pytest
 
 from boatland.freqdomain import LandingSetup
 from boatland.freqdomain.screening import default_omega, landed_response
-from boatland.scenario_check import default_scenario_path, load, resolve_database
+from pathlib import Path
+
+from boatland.scenario_check import load, resolve_database
 from boatland.trial.simulate import simulate
 
 T_START = 100.0  # [s] transients left out
+CTV24_LANDING = Path(__file__).resolve().parents[2] / "scenarios" / "ctv24_landing.toml"   # the figures' vessel
 
 
 @pytest.fixture(scope="module")
 def case():
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        base = load(default_scenario_path())
+        base = load(CTV24_LANDING)
         db = resolve_database(base)
     s = base.replace({"sea.Hs": 0.1, "fender.mu_s": 2.0, "fender.mu_k": 2.0, "fender.k_v": 0.0,
                       "simulation.duration": 1800.0, "landing.diffraction": False})  # open sea, as the FD side

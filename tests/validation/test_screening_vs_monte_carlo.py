@@ -1,5 +1,5 @@
 """The frequency-domain screening against the time-domain Monte Carlo: P(first slip within a 30-min
-access) of the default CTV (scenarios/ctv_landing.toml: two tubes, the compliant rubber fender, the
+access) of the Wigley CTV on its landing (scenarios/ctv24_landing.toml, the first default: two tubes, the compliant rubber fender, the
 pile's scattered wave) at Tp 7 s in head (180°), quartering (135°) and beam (90°) seas.
 
 Time domain: campaigns of 24 wave seeds per case (:func:`boatland.campaign.run_campaign`, two local
@@ -37,8 +37,7 @@ turbines, *Ocean Engineering* 91.
 
 import pytest
 
-from boatland.scenario_check import default_scenario_path
-from boatland.validation.campaigns import fd_vs_td_campaign, run_study
+from boatland.validation.campaigns import fd_vs_td_campaign, run_study, validation_scenario_path
 
 CASES = {180.0: (0.23, 0.26), 135.0: (0.125, 0.13), 90.0: (0.09, 0.10)}
 SEEDS = 24
@@ -47,7 +46,7 @@ SEEDS = 24
 @pytest.mark.parametrize("heading", list(CASES))
 def test_screening_probability_lies_in_the_monte_carlo_interval(tmp_path, heading):
     # boatland.validation.campaigns: the campaign of `boatland validate`'s screening-vs-monte-carlo case
-    f = fd_vs_td_campaign(tmp_path, heading, CASES[heading], seeds=SEEDS, scenario=default_scenario_path())
+    f = fd_vs_td_campaign(tmp_path, heading, CASES[heading], seeds=SEEDS, scenario=validation_scenario_path())
     _, _, stats = run_study(f, tmp_path / f"{heading:g}.h5", workers=2)
     for row in stats:
         p, lo, hi = row["first slip: P"], row["first slip: P lo"], row["first slip: P hi"]

@@ -1,7 +1,7 @@
 """Harmonic series on uniform grids: the fast sum equals the direct sum (the oracle) in real use.
 
 The criterion (issue 16): every sample of every output within 1e-9 of that output's RMS, the RMS of
-the direct series. The cases are the trial's: the default sea (JONSWAP Hs 1.5 m, Tp 7 s, head seas)
+the direct series. The cases are the trial's: the first default trial's sea (scenarios/ctv24_landing.toml: JONSWAP Hs 1.5 m, Tp 7 s, head seas)
 over 600 s and 10 000 s through the ctv24 excitation with the monopile's scattered wave (``X_extra``),
 a short-crested sea with the pile (exact scattered wave per direction), and a measured record, whole
 and truncated to 20 components. Both sums are reached the way the trial reaches them
@@ -11,13 +11,14 @@ the automatic choice is the NUFFT in the trial's cases is checked separately.
 """
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
 
 import boatland.waves.excitation as excitation_module
 from boatland.model.seastate import MeasuredRecord, SeaState, SpectrumPart, wave_excitation
-from boatland.scenario_check import default_scenario_path, load_checked
+from boatland.scenario_check import load_checked
 from boatland.waves.excitation import excitation_series, ramp
 from boatland.waves.realisation import Components, regular_components
 from boatland.waves.synthesis import (elevation_series, component_phasors, harmonic_series, harmonic_sum,
@@ -25,11 +26,12 @@ from boatland.waves.synthesis import (elevation_series, component_phasors, harmo
 
 DT = 0.05
 RTOL = 1e-9  # of each output's RMS (issue 16)
+CTV24_LANDING = Path(__file__).resolve().parents[2] / "scenarios" / "ctv24_landing.toml"  # measured on it
 
 
 @pytest.fixture(scope="module")
 def landing():
-    scenario, db, _ = load_checked(default_scenario_path())
+    scenario, db, _ = load_checked(CTV24_LANDING)
     x0, y0, psi = scenario.start_pose()
     radius, position = scenario.pile(db)
     return scenario, db, dict(x0=x0, y0=y0, heading_deg=math.degrees(psi)), (radius, position, math.inf)
