@@ -124,11 +124,11 @@ def write_report(store: str | Path, out_dir: str | Path, *, incident: str | None
         Width asked of the 95 % interval of P near the target, for the seeds advice.
     """
     data = read_store(store)
-    incident = _incident(data, incident)
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
-    if data["header"].get("method") == "isee":
+    if data["header"].get("method") == "isee":      # its own incident (the campaign's [isee] incident)
         return _isee_report(data, out, incident, figures)
+    incident = _incident(data, incident)
     stats, plan = data["stats"], data["plan"]
     names = data["header"]["incidents"].split("\n")
     dec = decision(data, incident, target, width=width)

@@ -119,6 +119,9 @@ def test_report_and_heaviest_samples(reference):
     for name in ("isee_runs.csv", "isee_runs.md", "isee_limits.csv", "isee_limits.md", "p_vs_hs.png",
                  "limiting_hs_polar.png"):
         assert (rep / name).stat().st_size > 100, name
+    # the report is about the campaign's own incident ([isee] incident: first slip), not the Monte Carlo
+    # reports' default (the first slip-distance definition)
+    assert (rep / "isee_runs.md").read_text().startswith("# ISEE runs: P(first slip within the access)")
     logs = sorted((one.parent / "one.h5.worst").glob("sample_*.mcap"))
     assert len(logs) == 2
     from boatland.record.reader import read_run_log
