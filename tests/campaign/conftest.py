@@ -46,3 +46,45 @@ def dask_cluster():
 def unused_port() -> int:
     """A free TCP port on 127.0.0.1 (nothing listens there)."""
     return free_port()
+
+
+def kill_repeatedly(campaign, store, kills: int, seed: int, *, wait: float = 120.0, jitter: float = 1.0) -> list[int]:
+    """Start ``boatland campaign CAMPAIGN -o STORE --workers 1`` ``kills`` times, each time SIGKILLing it
+    at a random moment (uniform in [0, ``jitter``] s, seeded) after its first new trial reached the disk
+    (``wait``: the longest start-up to wait for); returns the trials on disk (store + journal) after each
+    kill."""
+    import signal
+
+    import h5py
+    import numpy as np
+
+    store = Path(store)
+    journal = store.with_name(store.name + ".journal")
+
+    def on_disk():
+        n = sum(1 for _ in open(journal)) if journal.exists() else 0
+        if store.exists():
+            with h5py.File(store, "r") as f:
+                n += len(f["trials"])
+        return n
+
+    rng = np.random.default_rng(seed)
+    partial = []
+    for _ in range(kills):
+        before = on_disk()
+        p = subprocess.Popen([sys.executable, "-m", "boatland", "campaign", str(campaign), "-o", str(store),
+                              "--workers", "1"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        deadline = time.monotonic() + wait
+        while on_disk() == before and p.poll() is None and time.monotonic() < deadline:
+            time.sleep(0.05)                       # wait for this run's first new trial (start-up varies)
+        time.sleep(float(rng.uniform(0.0, jitter)))  # then kill at a random moment
+        p.send_signal(signal.SIGKILL)
+        p.wait()
+        partial.append(on_disk())
+    return partial
+
+
+@pytest.fixture
+def sigkill_campaign():
+    """:func:`kill_repeatedly`: a campaign CLI killed with SIGKILL at random moments, several times."""
+    return kill_repeatedly

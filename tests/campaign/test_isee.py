@@ -3,10 +3,8 @@ a real Dask cluster, resume after SIGKILL, the limiting-Hs search, the report, t
 run logs, bad input. Real processes throughout (boatland CLI, dask scheduler and workers)."""
 
 import math
-import signal
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import h5py
@@ -149,31 +147,10 @@ def test_a_real_dask_cluster_gives_the_same_store(reference, tmp_path, dask_clus
     same(summaries(one), summaries(tmp_path / "dask.h5"))
 
 
-def test_resume_after_sigkill_equals_an_uninterrupted_run(reference, tmp_path):
+def test_resume_after_sigkill_equals_an_uninterrupted_run(reference, tmp_path, sigkill_campaign):
     camp, one, _ = reference
     store = tmp_path / "killed.h5"
-    journal = store.with_name(store.name + ".journal")
-
-    def on_disk():
-        n = sum(1 for _ in open(journal)) if journal.exists() else 0
-        if store.exists():
-            with h5py.File(store, "r") as f:
-                n += len(f["trials"])
-        return n
-
-    rng = np.random.default_rng(4)
-    partial = []
-    for _ in range(3):
-        before = on_disk()
-        p = subprocess.Popen([sys.executable, "-m", "boatland", "campaign", str(camp), "-o", str(store),
-                              "--workers", "1"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        deadline = time.monotonic() + 180
-        while on_disk() == before and p.poll() is None and time.monotonic() < deadline:
-            time.sleep(0.05)
-        time.sleep(float(rng.uniform(0.0, 2.0)))
-        p.send_signal(signal.SIGKILL)
-        p.wait()
-        partial.append(on_disk())
+    partial = sigkill_campaign(camp, store, kills=3, seed=4, wait=180.0, jitter=2.0)
     r = run("campaign", camp, "-o", store, "--workers", "1")
     assert r.returncode == 0, r.stderr
     print("samples on disk after each kill:", partial)

@@ -1,14 +1,12 @@
 """Campaigns end to end: the same store from 1 or 2 local workers and from a real Dask cluster; resume
 after SIGKILL; bad input. Real processes throughout (boatland CLI, dask scheduler and workers)."""
 
-import signal
 import subprocess
 import sys
 import time
 from pathlib import Path
 
 import h5py
-import numpy as np
 import pytest
 
 REPO = Path(__file__).resolve().parents[2]
@@ -105,35 +103,14 @@ def test_unreachable_scheduler_is_a_clear_error(reference, unused_port):
     assert time.monotonic() - t0 < 60
 
 
-def test_resume_after_sigkill_equals_an_uninterrupted_run(tmp_path):
+def test_resume_after_sigkill_equals_an_uninterrupted_run(tmp_path, sigkill_campaign):
     """Killed with SIGKILL at random moments, then run to the end: the same store as one uninterrupted
     run, bit for bit in the summaries, every trial once."""
     camp = campaign_file(tmp_path, name="killed", seeds=4, duration=1200.0, method="state_space")
     clean = tmp_path / "clean.h5"
     assert run("campaign", camp, "-o", clean, "--workers", "1").returncode == 0
     store = tmp_path / "killed.h5"
-    journal = store.with_name(store.name + ".journal")
-
-    def on_disk():
-        n = sum(1 for _ in open(journal)) if journal.exists() else 0
-        if store.exists():
-            with h5py.File(store, "r") as f:
-                n += len(f["trials"])
-        return n
-
-    rng = np.random.default_rng(3)
-    partial = []
-    for _ in range(4):
-        before = on_disk()
-        p = subprocess.Popen([sys.executable, "-m", "boatland", "campaign", str(camp), "-o", str(store),
-                              "--workers", "1"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        deadline = time.monotonic() + 120
-        while on_disk() == before and p.poll() is None and time.monotonic() < deadline:
-            time.sleep(0.05)                       # wait for this run's first new trial (start-up varies)
-        time.sleep(float(rng.uniform(0.0, 1.0)))  # then kill at a random moment
-        p.send_signal(signal.SIGKILL)
-        p.wait()
-        partial.append(on_disk())
+    partial = sigkill_campaign(camp, store, kills=4, seed=3)
     r = run("campaign", camp, "-o", store, "--workers", "1")
     assert r.returncode == 0, r.stderr
     print("trials on disk after each kill:", partial)
