@@ -26,13 +26,15 @@ def dask_cluster():
     scheduler's address and stops them all afterwards."""
     port = free_port()
     address = f"tcp://127.0.0.1:{port}"
-    procs = [subprocess.Popen([DASK, "scheduler", "--host", "127.0.0.1", "--port", str(port), "--no-dashboard"],
+    loopback = ["--host", "127.0.0.1", "--dashboard-address", "127.0.0.1:0"]   # every listener (nanny,
+    # worker, their HTTP servers, which --no-dashboard does not stop) on 127.0.0.1, none on 0.0.0.0
+    procs = [subprocess.Popen([DASK, "scheduler", "--port", str(port), *loopback],
                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)]
     try:
         time.sleep(2.0)
         for _ in range(2):
             procs.append(subprocess.Popen([DASK, "worker", address, "--nworkers", "1", "--nthreads", "1",
-                                           "--no-dashboard", "--memory-limit", "0"],
+                                           *loopback, "--memory-limit", "0"],
                                           stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL))
         yield address
     finally:
