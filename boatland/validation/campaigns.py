@@ -368,7 +368,7 @@ CASES = [
          "Wu, M. (2014), \"Numerical analysis of docking operation between service vessels and offshore wind "
          "turbines\", *Ocean Engineering* 91 — the screening as Grøtting, H. (2015), NTNU MSc thesis, §3.2.1, "
          "§3.4, eq. 3.38, compared with his time domain in Tables 4.14–4.15.",
-         "For head, quartering and beam seas at T_p 7 s, the default scenario at the two H_s where the screening "
+         "For head, quartering and beam seas at T_p 7 s, the first default scenario (`scenarios/ctv24_landing.toml`) at the two H_s where the screening "
          "predicts P = 0.35 and 0.75 of a slip within a 30-min access: 24 seeded 30-min trials each (a campaign, "
          "which stores the screening's P of the same contacts, pile diffraction and preload beside its cases).",
          "whether the screening's P lies inside the Clopper–Pearson 95 % interval of the trials' P",
