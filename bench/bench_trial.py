@@ -85,7 +85,7 @@ def slips(out) -> int:
 
 
 def size(arr) -> str:
-    return f"{arr.ss_A.shape[0]} states" if not arr.conv else f"{arr.n_hist} × {arr.pairs_i.size}"
+    return f"{arr.n_states} states" if not arr.conv else f"{arr.n_hist} × {arr.pairs_i.size}"
 
 
 def main():

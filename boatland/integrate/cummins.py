@@ -124,50 +124,52 @@ def _history(vbuf, head, count, Kh, pairs_i, pairs_j, dt, H):
         H[2, i] += s1 * dt
 
 
-@njit(cache=True)
-def _output_order(ss_out):
-    """States by output DOF: column d of the (n_max, 6) result lists, in increasing order, the states
-    whose output is DOF d (−1 pads). Lets :func:`_state_space` run the six output sums side by side."""
-    counts = np.zeros(6, dtype=np.int64)
-    for s in range(ss_out.shape[0]):
-        counts[ss_out[s]] += 1
-    order = np.full((max(counts.max(), 1), 6), -1, dtype=np.int64)
-    counts[:] = 0
-    for s in range(ss_out.shape[0]):
-        d = ss_out[s]
-        order[counts[d], d] = s
-        counts[d] += 1
-    return order
+#: One, as an unsigned index: state-space indices are unsigned so that numba emits no negative-index
+#: wraparound for them (a select per access that blocks vectorisation).
+_U1 = np.uint64(1)
 
 
 @njit(cache=True, _nrt=False, forceinline=True)
-def _minus_output(f, s, ss_C, z):
-    """f − C_s z_s, or f for the padding s = −1 of :func:`_output_order`."""
-    return f - ss_C[s] * z[s] if s >= 0 else f
+def _state_space(v, z, ss_A, ss_B, ss_C, ss_seg, rows, st, kz, F):
+    r"""Modal state-space memory: derivative into row ``st`` of ``kz`` and the output subtracted from ``F``.
 
+    .. math::
+        \dot z_s = (a_s z_s + b_s \dot x_{j(s)}) + a^{\uparrow}_s z_{s+1} + a^{\downarrow}_s z_{s-1},
+        \qquad F_i \mathrel{-}= c_s z_s \ \text{for the states } s \text{ of output DOF } i \text{ in order}
 
-@njit(cache=True, _nrt=False, forceinline=True)
-def _state_space(v, z, ss_A, ss_B, ss_C, ss_in, ss_pair, ss_order, st, kz, F):
-    """Modal state-space memory: derivative into row ``st`` of ``kz`` and the output subtracted from ``F``.
-
-    Block-diagonal realisation: each state couples to itself and at most one partner. Each output DOF
-    subtracts its states in increasing order; the six sums run side by side in registers (``ss_order``
-    from :func:`_output_order`) rather than one long dependent chain after the other.
+    in the layout of :func:`boatland.model.motion.modal_layout`: a complex pair's partner is the state
+    above or below (the other coefficient zero), each run of ``ss_seg`` shares its input DOF, and the
+    six output sums (``rows``: first state and count per output DOF) run side by side. Every loop is
+    contiguous with unsigned indices, so the derivative vectorises.
     """
-    for s in range(z.shape[0]):
-        acc_z = ss_A[s, 0] * z[s] + ss_B[s] * v[ss_in[s]]
-        q = ss_pair[s]
-        if q >= 0:
-            acc_z += ss_A[s, 1] * z[q]
-        kz[st, s] = acc_z
+    for g in range(ss_seg.shape[0]):
+        vj = v[ss_seg[g, 2]]
+        s = np.uint64(ss_seg[g, 0])
+        end = np.uint64(ss_seg[g, 1])
+        while s < end:
+            kz[st, s] = ((ss_A[0, s] * z[s] + ss_B[s] * vj) + ss_A[1, s] * z[s + _U1]) + ss_A[2, s] * z[s - _U1]
+            s += _U1
+    o0, o1, o2 = np.uint64(rows[0, 0]), np.uint64(rows[1, 0]), np.uint64(rows[2, 0])
+    o3, o4, o5 = np.uint64(rows[3, 0]), np.uint64(rows[4, 0]), np.uint64(rows[5, 0])
+    n0, n1, n2 = np.uint64(rows[0, 1]), np.uint64(rows[1, 1]), np.uint64(rows[2, 1])
+    n3, n4, n5 = np.uint64(rows[3, 1]), np.uint64(rows[4, 1]), np.uint64(rows[5, 1])
+    longest = max(n0, n1, n2, n3, n4, n5)
     f0, f1, f2, f3, f4, f5 = F[0], F[1], F[2], F[3], F[4], F[5]
-    for r in range(ss_order.shape[0]):
-        f0 = _minus_output(f0, ss_order[r, 0], ss_C, z)
-        f1 = _minus_output(f1, ss_order[r, 1], ss_C, z)
-        f2 = _minus_output(f2, ss_order[r, 2], ss_C, z)
-        f3 = _minus_output(f3, ss_order[r, 3], ss_C, z)
-        f4 = _minus_output(f4, ss_order[r, 4], ss_C, z)
-        f5 = _minus_output(f5, ss_order[r, 5], ss_C, z)
+    r = np.uint64(0)
+    while r < longest:
+        if r < n0:
+            f0 -= ss_C[o0 + r] * z[o0 + r]
+        if r < n1:
+            f1 -= ss_C[o1 + r] * z[o1 + r]
+        if r < n2:
+            f2 -= ss_C[o2 + r] * z[o2 + r]
+        if r < n3:
+            f3 -= ss_C[o3 + r] * z[o3 + r]
+        if r < n4:
+            f4 -= ss_C[o4 + r] * z[o4 + r]
+        if r < n5:
+            f5 -= ss_C[o5 + r] * z[o5 + r]
+        r += _U1
     F[0], F[1], F[2], F[3], F[4], F[5] = f0, f1, f2, f3, f4, f5
 
 
@@ -178,7 +180,7 @@ def _forces(t_idx, c2, x, v, z, v_n, R, dt, H, C, Bv, Bq, F_ext, thrust, r_p, co
     The stage is ``c2`` half steps into the step (0, 1, 2: c = 0, ½, 1), at half-step index ``t_idx``;
     ``v_n`` is the velocity at the step start, ``H`` (3, 6) the history sums of the step.
     """
-    Kh, pairs_i, pairs_j, ss_A, ss_B, ss_C, ss_in, ss_order, ss_pair = memory
+    Kh, pairs_i, pairs_j, ss_A, ss_B, ss_C, ss_seg, ss_rows = memory
     for d in range(6):
         F[d] = F_ext[t_idx, d] - Bv[d] * v[d] - Bq[d] * abs(v[d]) * v[d]
         for e in range(6):
@@ -194,7 +196,7 @@ def _forces(t_idx, c2, x, v, z, v_n, R, dt, H, C, Bv, Bq, F_ext, thrust, r_p, co
         for d in range(6):
             F[d] -= H[c2, d]
     else:
-        _state_space(v, z, ss_A, ss_B, ss_C, ss_in, ss_pair, ss_order, st, kz, F)
+        _state_space(v, z, ss_A, ss_B, ss_C, ss_seg, ss_rows, st, kz, F)
 
 
 @njit(cache=True, _nrt=False, forceinline=True)
@@ -303,7 +305,7 @@ def _wait_for_gate(gate, n):
 
 @njit(cache=True, nogil=True)
 def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
-                conv, Kh, pairs_i, pairs_j, n_hist, ss_A, ss_B, ss_C, ss_in, ss_out, ss_pair,
+                conv, Kh, pairs_i, pairs_j, n_hist, ss_A, ss_B, ss_C, ss_seg, ss_rows,
                 ct, v_tol, limit_trans, limit_rot, out_x, out_v, out_mode, out_fn, out_ft, out_need,
                 out_avail, out_tpos, out_slide, out_work, progress, gate):
     """Integrate the Cummins equation with classic RK4; returns ``(status, last_step)``.
@@ -332,9 +334,10 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
     conv : bool
         True: convolution memory with ``Kh`` (npairs, nK2) = K(k Δt/2) of the pairs
         (``pairs_i``, ``pairs_j``) over ``n_hist`` past steps. False: state space in modal
-        (block-diagonal) form: ``ss_A`` (ns, 2) the diagonal entry and the entry coupling each state
-        to its 2×2-block partner ``ss_pair`` (ns,) (−1 for a real pole), ``ss_B`` (ns,), ``ss_C``
-        (ns,), input DOF ``ss_in`` (ns,), output DOF ``ss_out`` (ns,).
+        (block-diagonal) form, laid out by :func:`boatland.model.motion.modal_layout`: ``ss_A`` (3, N)
+        each state's coefficient of itself, of the state above and of the state below, ``ss_B`` (N,),
+        ``ss_C`` (N,), ``ss_seg`` (n_seg, 3) runs [start, end) sharing an input DOF, ``ss_rows`` (6, 2)
+        first state and number of states per output DOF (N = states + 2 zero guards).
     ct : Contacts
         The fender contacts in the local frame (:class:`boatland.contact.fender.Contacts`; Nc = 0 for none).
     v_tol : float
@@ -373,7 +376,7 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
     tpos = ws[0][6]  # positions of the contacts on the landing at the stage state (contact_states)
     records = (np.zeros((nc, 2)), np.zeros(nc), np.zeros(nc), np.zeros(nc))  # f_t, f_n, needed, available
     n_s = ss_B.shape[0]
-    memory = (Kh, pairs_i, pairs_j, ss_A, ss_B, ss_C, ss_in, _output_order(ss_out), ss_pair)
+    memory = (Kh, pairs_i, pairs_j, ss_A, ss_B, ss_C, ss_seg, ss_rows)
     x = x0.copy()
     v = v0.copy()
     z = np.zeros(n_s)

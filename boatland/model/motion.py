@@ -11,7 +11,7 @@ from boatland.integrate.cummins import STATUS_MESSAGES, run_cummins
 from boatland.model.hydrodb import HydroDB
 from boatland.model.radiation import RadiationMemory
 
-__all__ = ["MotionArrays", "compile_motion"]
+__all__ = ["MotionArrays", "compile_motion", "modal_layout"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -28,16 +28,20 @@ class MotionArrays:
     ss_A: np.ndarray
     ss_B: np.ndarray
     ss_C: np.ndarray
-    ss_in: np.ndarray
-    ss_out: np.ndarray
-    ss_pair: np.ndarray
+    ss_seg: np.ndarray
+    ss_rows: np.ndarray
+
+    @property
+    def n_states(self) -> int:
+        """Number of state-space memory states (the guards of :func:`modal_layout` not counted)."""
+        return self.ss_B.shape[0] - 2
 
     @classmethod
     def without_memory(cls, Mt, C) -> "MotionArrays":
         """A system with no radiation memory (K ≡ 0): (M + A∞) x'' + C x = F — for analytic checks."""
         e = np.zeros(0, dtype=np.int64)
         return cls(np.linalg.inv(np.asarray(Mt, dtype=float)), np.asarray(C, dtype=float).copy(), True,
-                   np.zeros((0, 1)), e, e, 0, np.zeros((0, 2)), np.zeros(0), np.zeros(0), e, e, e)
+                   np.zeros((0, 1)), e, e, 0, *modal_layout(np.zeros((0, 2)), np.zeros(0), np.zeros(0), e, e, e))
 
     @staticmethod
     def allocate_outputs(n_steps: int, nc: int) -> dict:
@@ -92,7 +96,7 @@ class MotionArrays:
         status, last = run_cummins(
             float(dt), int(n_steps), self.Mt_inv, self.C, vec(Bv), vec(Bq), F_ext, thrust,
             np.asarray(r_p, dtype=float), vec(x0), vec(v0), self.conv, self.Kh, self.pairs_i, self.pairs_j,
-            self.n_hist, self.ss_A, self.ss_B, self.ss_C, self.ss_in, self.ss_out, self.ss_pair, contacts, float(v_tol),
+            self.n_hist, self.ss_A, self.ss_B, self.ss_C, self.ss_seg, self.ss_rows, contacts, float(v_tol),
             float(limit_trans), float(limit_rot), out["x"], out["v"], out["mode"], out["fn"], out["ft"],
             out["needed"], out["available"], out["tpos"], out["slide"], out["work"], progress, gate)
         out = {k: a[:last + 1] for k, a in out.items()}
@@ -152,7 +156,7 @@ def compile_motion(db: HydroDB, memory: RadiationMemory, dt: float, *, method: s
         pi = np.array([p[0] for p in pairs], dtype=np.int64)
         pj = np.array([p[1] for p in pairs], dtype=np.int64)
         return MotionArrays(np.linalg.inv(Mt), db.C.copy(), True, Kh, pi, pj, int(round(T_K / dt)),
-                            np.zeros((0, 2)), np.zeros(0), np.zeros(0), empty_i, empty_i, empty_i)
+                            *modal_layout(np.zeros((0, 2)), np.zeros(0), np.zeros(0), empty_i, empty_i, empty_i))
     if method != "state_space":
         raise ValueError(f"method must be 'convolution' or 'state_space', got {method!r}")
     ss = memory.state_space
@@ -179,6 +183,55 @@ def compile_motion(db: HydroDB, memory: RadiationMemory, dt: float, *, method: s
             raise ValueError("state-space blocks larger than 2×2: not a modal realisation")
         if others:
             pair[s_], A2[s_, 1] = others[0], A[s_, others[0]]
+    ss_A, ss_B, ss_C, ss_seg, rows = modal_layout(A2, B, Cr, s_in, s_out, pair)
     return MotionArrays(np.linalg.inv(Mt), db.C.copy(), False, np.zeros((0, 1)), empty_i, empty_i, 0,
-                        A2, B, Cr, s_in, s_out, pair)
+                        ss_A, ss_B, ss_C, ss_seg, rows)
 
+
+def modal_layout(A2, B, C, s_in, s_out, pair):
+    r"""The kernel's layout of a modal state-space memory (:func:`boatland.integrate.cummins._state_space`).
+
+    The states of the fitted systems :math:`\dot z_s = a_s z_s + a'_s z_{q(s)} + b_s \dot x_{j(s)}`,
+    :math:`\mu_i = \sum_{s: i(s) = i} c_s z_s` (``pair`` q(s) = −1: a real pole) keep their order,
+    grouped by output DOF, between one zero guard state at each end (length N = n + 2). A complex pair's
+    partner must be its neighbour, so the kernel reads it as the state above or below (``ss_A`` rows 1,
+    2; the other row 0) in contiguous, vectorisable loops without an index array.
+
+    The arithmetic of every state and every output sum is unchanged (same operations in the same
+    order): a zero coefficient adds an exact zero and the guards stay zero.
+
+    Returns
+    -------
+    ss_A : (3, N)
+        Coefficient of the state itself, of the state above, of the state below (rows: each contiguous).
+    ss_B, ss_C : (N,)
+        Input and output coefficients.
+    ss_seg : (n_seg, 3) int64
+        Runs ``[start, end)`` of states sharing an input DOF (third column), covering every state once.
+    rows : (6, 2) int64
+        First state and number of states of each output DOF.
+    """
+    n = B.shape[0]
+    if n and np.any(np.diff(s_out) < 0):
+        raise ValueError("state-space states must be grouped by output DOF (blocks sorted by pair)")
+    N = n + 2
+    ss_A, ss_B, ss_C = np.zeros((3, N)), np.zeros(N), np.zeros(N)
+    ss_A[0, 1:-1], ss_B[1:-1], ss_C[1:-1] = A2[:, 0], B, C
+    for s_ in range(n):
+        q = pair[s_]
+        if q < 0:
+            continue
+        if s_out[q] != s_out[s_] or abs(q - s_) != 1:
+            raise ValueError("a complex pole's partner state must be its neighbour in the same pair's block")
+        ss_A[1 if q > s_ else 2, 1 + s_] = A2[s_, 1]
+    counts = np.bincount(s_out, minlength=6)[:6] if n else np.zeros(6, dtype=np.int64)
+    rows = np.stack([1 + np.concatenate([[0], np.cumsum(counts)[:-1]]), counts], axis=1).astype(np.int64)
+    seg = []
+    s_ = 0
+    while s_ < n:
+        e = s_ + 1
+        while e < n and s_in[e] == s_in[s_] and s_out[e] == s_out[s_]:
+            e += 1
+        seg.append((1 + s_, 1 + e, s_in[s_]))
+        s_ = e
+    return ss_A, ss_B, ss_C, np.array(seg, dtype=np.int64).reshape(-1, 3), rows
