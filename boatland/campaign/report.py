@@ -445,8 +445,8 @@ def _isee_figures(runs, lim, plan, inc, out):
     dkey = next((k for k in DIR_KEYS if k in axes), None)
     if lim is not None and dkey is not None:
         tkey = next((k for k in TP_KEYS if k in axes), None)
-        fig = plt.figure(figsize=(6, 6))
-        ax = fig.add_subplot(projection="polar")
+        fig = plt.figure(figsize=(6, 7.2))
+        ax = fig.add_axes((0.12, 0.26, 0.76, 0.63), projection="polar")   # the legend below, clear of "0° following"
         tps = sorted({float(x) for x in lim[f"axis: {tkey}"]}) if tkey else [None]
         for i, tp in enumerate(tps):
             sel = lim if tp is None else lim[lim[f"axis: {tkey}"] == tp]
@@ -461,6 +461,6 @@ def _isee_figures(runs, lim, plan, inc, out):
         heading_polar(ax)
         acc = float(lim["accept"][0])
         ax.set_title(f"limiting Hs [m] at P({inc}) = {acc:g} per access\n(heading relative to the bow)", fontsize=9)
-        ax.legend(fontsize=6, loc="lower left", bbox_to_anchor=(-0.1, -0.15), ncol=2)
+        fig.legend(*ax.get_legend_handles_labels(), fontsize=6, loc="lower center", ncol=2, frameon=False)
         files.append(_save(fig, out / "limiting_hs_polar.png"))
     return files

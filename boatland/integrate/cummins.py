@@ -154,6 +154,8 @@ def _state_space(v, z, ss_A, ss_B, ss_C, ss_seg, rows, st, kz, F):
     n0, n1, n2 = np.uint64(rows[0, 1]), np.uint64(rows[1, 1]), np.uint64(rows[2, 1])
     n3, n4, n5 = np.uint64(rows[3, 1]), np.uint64(rows[4, 1]), np.uint64(rows[5, 1])
     longest = max(n0, n1, n2, n3, n4, n5)
+    # six sums written out, not a loop over an array: each stays in a register and the six dependent
+    # chains run side by side (an f[6] array would pass every subtraction through memory)
     f0, f1, f2, f3, f4, f5 = F[0], F[1], F[2], F[3], F[4], F[5]
     r = np.uint64(0)
     while r < longest:
