@@ -41,7 +41,7 @@ class MotionArrays:
         """A system with no radiation memory (K ≡ 0): (M + A∞) x'' + C x = F — for analytic checks."""
         e = np.zeros(0, dtype=np.int64)
         return cls(np.linalg.inv(np.asarray(Mt, dtype=float)), np.asarray(C, dtype=float).copy(), True,
-                   np.zeros((0, 1)), e, e, 0, *modal_layout(np.zeros((0, 2)), np.zeros(0), np.zeros(0), e, e, e))
+                   np.zeros((0, 1)), e, e, 0, *_no_state_space())
 
     @staticmethod
     def allocate_outputs(n_steps: int, nc: int) -> dict:
@@ -156,7 +156,7 @@ def compile_motion(db: HydroDB, memory: RadiationMemory, dt: float, *, method: s
         pi = np.array([p[0] for p in pairs], dtype=np.int64)
         pj = np.array([p[1] for p in pairs], dtype=np.int64)
         return MotionArrays(np.linalg.inv(Mt), db.C.copy(), True, Kh, pi, pj, int(round(T_K / dt)),
-                            *modal_layout(np.zeros((0, 2)), np.zeros(0), np.zeros(0), empty_i, empty_i, empty_i))
+                            *_no_state_space())
     if method != "state_space":
         raise ValueError(f"method must be 'convolution' or 'state_space', got {method!r}")
     ss = memory.state_space
@@ -212,7 +212,7 @@ def modal_layout(A2, B, C, s_in, s_out, pair):
         First state and number of states of each output DOF.
     """
     n = B.shape[0]
-    if n and np.any(np.diff(s_out) < 0):
+    if np.any(np.diff(s_out) < 0):
         raise ValueError("state-space states must be grouped by output DOF (blocks sorted by pair)")
     N = n + 2
     ss_A, ss_B, ss_C = np.zeros((3, N)), np.zeros(N), np.zeros(N)
@@ -224,7 +224,7 @@ def modal_layout(A2, B, C, s_in, s_out, pair):
         if s_out[q] != s_out[s_] or abs(q - s_) != 1:
             raise ValueError("a complex pole's partner state must be its neighbour in the same pair's block")
         ss_A[1 if q > s_ else 2, 1 + s_] = A2[s_, 1]
-    counts = np.bincount(s_out, minlength=6)[:6] if n else np.zeros(6, dtype=np.int64)
+    counts = np.bincount(s_out, minlength=6)
     rows = np.stack([1 + np.concatenate([[0], np.cumsum(counts)[:-1]]), counts], axis=1).astype(np.int64)
     seg = []
     s_ = 0
@@ -235,3 +235,9 @@ def modal_layout(A2, B, C, s_in, s_out, pair):
         seg.append((1 + s_, 1 + e, s_in[s_]))
         s_ = e
     return ss_A, ss_B, ss_C, np.array(seg, dtype=np.int64).reshape(-1, 3), rows
+
+
+def _no_state_space():
+    """:func:`modal_layout` of no states: the state-space fields of a kernel without that memory."""
+    e = np.zeros(0, dtype=np.int64)
+    return modal_layout(np.zeros((0, 2)), np.zeros(0), np.zeros(0), e, e, e)
