@@ -60,7 +60,7 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 
 import numpy as np
-from scipy.stats import norm
+from scipy.special import ndtri
 
 from boatland.campaign.plan import Campaign
 from boatland.campaign.runner import _context, check_cases, incident_names
@@ -351,7 +351,7 @@ def _log_bounds(est: IseeEstimate, z: float) -> tuple[float, float, float]:
     return lp, lp - w, lp + w
 
 
-def limit_fit(hs, est, log_rice, target: float, z: float = norm.ppf(0.5 + CONFIDENCE / 2)):
+def limit_fit(hs, est, log_rice, target: float, z: float = ndtri(0.5 + CONFIDENCE / 2)):
     r"""Limiting Hs at probability ``target`` from estimates at levels ``hs`` (module docstring):
     :math:`\log P = \log R(H_s) + c_0 + c_1/H_s^2` through the levels with P > 0.
 
@@ -460,7 +460,7 @@ def _next_level(levels: list[_Level], log_rice, target: float, max_levels: int) 
     if len(ok) >= 2 and min(ps) <= target <= max(ps):
         return None
     nearest = min(ok, key=lambda lv: abs(math.log(lv.est.p / target)))
-    z = norm.ppf(0.5 + CONFIDENCE / 2)
+    z = ndtri(0.5 + CONFIDENCE / 2)
     _, llo, lhi = _log_bounds(nearest.est, z)
     if len(ok) >= 2 and llo <= math.log(target) <= lhi:
         return None
@@ -564,7 +564,7 @@ def run_isee(campaign: Campaign, store_path: str | Path, *, loaders, executor: s
 def _summaries(campaign, table, levels, refs, curves, names, loaders):
     """The ``/stats`` table (one row per run) and ``/isee_limits`` (one row per case, with ``accept``)."""
     s = campaign.isee
-    z = norm.ppf(0.5 + CONFIDENCE / 2)
+    z = ndtri(0.5 + CONFIDENCE / 2)
     ests = ["domain", *names, *LINEAR]
     fields = [("case", "i8"), ("level", "i8"), ("label", "S200"), ("hs", "f8"), ("samples", "i8"), ("failed", "i8"),
               ("static slip", "i8")]

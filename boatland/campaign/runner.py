@@ -313,8 +313,8 @@ def _summary_row(result, t0: float, duration: float, names: list[str]) -> dict:
         "max_slip_distance": float(s["max_slip_distance"]), "max_single_slide": float(s["max_single_slide"]),
         "max_normal_force": nan if s["max_normal_force"] is None else float(s["max_normal_force"]),
         "min_normal_force": nan if s["min_normal_force_in_contact"] is None else float(s["min_normal_force_in_contact"]),
-        "max_roll_deg": float(np.degrees(np.max(np.abs(result.x[:, 3])))),
-        "max_pitch_deg": float(np.degrees(np.max(np.abs(result.x[:, 4])))),
+        "max_roll_deg": float(np.degrees(result.peak_motions[3])),
+        "max_pitch_deg": float(np.degrees(result.peak_motions[4])),
         "contact_fraction": float(s["contact_fraction"]),
     }
     inc = s["incidents"]

@@ -25,10 +25,24 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import stats
+from scipy import special
 
 __all__ = ["clopper_pearson", "exponential_mean_interval", "limiting_hs", "Crossing", "crossing", "LimitingHs",
            "limiting_hs_interval", "seeds_for_width"]
+
+
+def beta_ppf(q, a, b):
+    """Quantile q of the beta distribution B(a, b): the regularised incomplete beta function's inverse,
+    ``scipy.special.betaincinv`` — what ``scipy.stats.beta.ppf`` computes (the same values: tests), without
+    importing ``scipy.stats`` (≈ 1.2 s, once per campaign process)."""
+    return special.betaincinv(a, b, q)
+
+
+def chi2_ppf(q, df):
+    """Quantile q of the χ² distribution with ``df`` degrees of freedom, 2 P⁻¹(df/2, q) with P the
+    regularised lower incomplete gamma function — what ``scipy.stats.chi2.ppf`` computes (the same values:
+    tests)."""
+    return 2.0 * special.gammaincinv(df / 2, q)
 
 
 def clopper_pearson(k: int, n: int, confidence: float = 0.95) -> tuple[float, float, float]:
@@ -36,8 +50,8 @@ def clopper_pearson(k: int, n: int, confidence: float = 0.95) -> tuple[float, fl
     if n <= 0:
         return math.nan, math.nan, math.nan
     a = 1.0 - confidence
-    lo = 0.0 if k == 0 else float(stats.beta.ppf(a / 2, k, n - k + 1))
-    hi = 1.0 if k == n else float(stats.beta.ppf(1 - a / 2, k + 1, n - k))
+    lo = 0.0 if k == 0 else float(beta_ppf(a / 2, k, n - k + 1))
+    hi = 1.0 if k == n else float(beta_ppf(1 - a / 2, k + 1, n - k))
     return k / n, lo, hi
 
 
@@ -60,11 +74,11 @@ def exponential_mean_interval(times, exposure, confidence: float = 0.95) -> tupl
     T = float(np.sum(np.where(hit, t, exposure)))
     a = 1.0 - confidence
     if r == t.size:  # every trial ended in an incident: seed 002 eq. 3.55
-        return T / r, 2 * T / stats.chi2.ppf(1 - a / 2, 2 * r), 2 * T / stats.chi2.ppf(a / 2, 2 * r)
-    lower = 2 * T / stats.chi2.ppf(1 - a / 2, 2 * r + 2)
+        return T / r, 2 * T / chi2_ppf(1 - a / 2, 2 * r), 2 * T / chi2_ppf(a / 2, 2 * r)
+    lower = 2 * T / chi2_ppf(1 - a / 2, 2 * r + 2)
     if r == 0:
         return math.inf, float(lower), math.inf
-    return T / r, float(lower), float(2 * T / stats.chi2.ppf(a / 2, 2 * r))
+    return T / r, float(lower), float(2 * T / chi2_ppf(a / 2, 2 * r))
 
 
 def limiting_hs(hs, p, target: float) -> float:
@@ -152,8 +166,8 @@ def seeds_for_width(p: float, width: float, confidence: float = 0.95, n_max: int
     a = 1.0 - confidence
     n = np.unique(np.round(np.geomspace(1, n_max, 4000)).astype(int))
     k = np.round(p * n)
-    lo = np.where(k == 0, 0.0, stats.beta.ppf(a / 2, np.maximum(k, 1), n - k + 1))
-    hi = np.where(k == n, 1.0, stats.beta.ppf(1 - a / 2, k + 1, np.maximum(n - k, 1)))
+    lo = np.where(k == 0, 0.0, beta_ppf(a / 2, np.maximum(k, 1), n - k + 1))
+    hi = np.where(k == n, 1.0, beta_ppf(1 - a / 2, k + 1, np.maximum(n - k, 1)))
     ok = np.nonzero(hi - lo <= width)[0]
     if not ok.size:
         return None

@@ -163,8 +163,8 @@ def estimate(values, log_pbar: float, confidence: float = 0.95) -> IseeEstimate:
         return IseeEstimate(0.0, math.inf, 0.0, math.nan, n, 0)
     sd = float(np.std(v, ddof=1)) if n > 1 else math.inf
     cov = sd / (mean * math.sqrt(n))
-    from scipy.stats import norm
+    from scipy.special import ndtri               # the normal quantile (scipy.stats.norm.ppf), without scipy.stats
 
-    zq = float(norm.ppf(0.5 + confidence / 2))
+    zq = float(ndtri(0.5 + confidence / 2))
     p = pbar * mean
     return IseeEstimate(p, cov, max(0.0, p * (1 - zq * cov)), p * (1 + zq * cov), n, hits)

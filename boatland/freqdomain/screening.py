@@ -77,6 +77,7 @@ from boatland.model.landed import normal_follows
 from boatland.model.pile_diffraction import pile_scattered_excitation
 from boatland.model.scenario_schema import SHEAR_DAMPING_RATIO_DEFAULT, SHEAR_STIFFNESS_DEFAULT
 from boatland.model.seastate import SpectrumPart
+from boatland.waves.excitation import direction_brackets, periodic_directions
 from boatland.waves.spectra import spreading_cos2s
 
 __all__ = ["ACCEPT_PRESETS", "ACCESS_DURATION", "MODES", "SHEAR_FACTORS", "LandingSetup", "LimitTable", "SeaResponse",
@@ -218,18 +219,35 @@ class LandingSetup:
         """A copy with some attributes changed (e.g. ``mu=0.8, thrust=120e3``)."""
         return dataclasses.replace(self, **changes)
 
-    def near_pile(self, db: HydroDB) -> HydroDB:
+    def near_pile(self, db: HydroDB, beta_deg=None) -> HydroDB:
         """``db`` with the pile's scattered wave added to its excitation (:func:`pile_scattered_excitation`),
-        as the time domain has it; ``db`` itself without a pile."""
+        as the time domain has it; ``db`` itself without a pile.
+
+        ``beta_deg`` (relative directions [deg]): X^s is added only to the columns of a full-circle table
+        that the interpolation at these directions reads (:func:`~boatland.waves.excitation.direction_brackets`)
+        — the same values there, at the cost of those columns instead of all of them; the other columns
+        keep the open-sea X, so use the result only at ``beta_deg``. Other tables get every column."""
         if self.pile is None:
             return db
         radius, position, depth = self.pile
-        key = (float(radius), float(position[0]), float(position[1]), float(depth), float(self.heading_deg))
+        cols = None
+        if beta_deg is not None and periodic_directions(db.wave_dir_deg):
+            j, j1, _, _ = direction_brackets(np.atleast_1d(np.asarray(beta_deg, dtype=float)), db.wave_dir_deg, True)
+            cols = tuple(int(c) for c in np.unique(np.concatenate([j, j1])))
+            if len(cols) == db.n_dir:
+                cols = None
+        key = (float(radius), float(position[0]), float(position[1]), float(depth), float(self.heading_deg), cols)
         per_db = _NEAR_PILE.setdefault(db, {})
         if key not in per_db:
-            Xs = pile_scattered_excitation(db, position, self.heading_deg, radius, depth)
-            per_db.clear()                      # one layout per database at a time: bounded memory
-            per_db[key] = db.replace(X=db.X + Xs)
+            Xs = pile_scattered_excitation(db, position, self.heading_deg, radius, depth, directions=cols)
+            if cols is None:
+                X = db.X + Xs
+            else:
+                X = np.array(db.X)
+                X[:, list(cols), :] = db.X[:, list(cols), :] + Xs
+            if len(per_db) >= 4:                # a few layouts and direction sets per database: bounded memory
+                per_db.pop(next(iter(per_db)))
+            per_db[key] = db.replace(X=X)
         return per_db[key]
 
     def check_on_hull(self, db: HydroDB, source: str = "landing") -> None:
@@ -358,7 +376,7 @@ def landed_response(db: HydroDB, setup: LandingSetup, omega, beta_deg, method: s
         return hinged_rao(db, omega, setup.points, beta_deg=beta_deg, normal=setup.normals,
                           additional_damping=setup.additional_damping)
     shear = None if not math.isfinite(setup.shear_stiffness) else setup.shear_stiffness
-    return hinged_rao(setup.near_pile(db), omega, setup.points, beta_deg=beta_deg, normal=setup.normals,
+    return hinged_rao(setup.near_pile(db, beta_deg), omega, setup.points, beta_deg=beta_deg, normal=setup.normals,
                       stiffness=setup.stiffness, damping=setup.damping, shear_stiffness=shear,
                       shear_damping=setup.shear_damping if shear is not None else None, sideways=setup.sideways,
                       thrust=setup.thrust, thrust_position=setup.thrust_position,

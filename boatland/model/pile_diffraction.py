@@ -108,7 +108,7 @@ def _layout(db: HydroDB, position, heading_deg: float, pile_radius: float, water
 
 def pile_scattered_excitation(db: HydroDB, position, heading_deg: float, pile_radius: float,
                               water_depth: float | None = None, *, part: str = "scattered",
-                              tol: float = TOL) -> np.ndarray:
+                              tol: float = TOL, directions=None) -> np.ndarray:
     r"""Froude–Krylov force of the monopile's scattered wave on the hull, X^s (module docstring).
 
     The pile stands at the global origin. The vessel's own scattering of the pile's wave is
@@ -135,12 +135,16 @@ def pile_scattered_excitation(db: HydroDB, position, heading_deg: float, pile_ra
         the open-sea X from the same panels (a check), ``"total"`` both.
     tol : float
         Accuracy of the MacCamy–Fuchs series per unit amplitude (:func:`~boatland.waves.diffraction.n_terms`).
+    directions : array_like of int, optional
+        Only these columns of ``db.wave_dir_deg`` (default all); each column is computed on its own, so
+        the values are those of the whole table.
 
     Returns
     -------
     ndarray of complex, shape (6, Nβ, Nω)
         Generalised force about ``db.ref_point`` per unit incident amplitude [N/m, N·m/m], exp(+iωt),
-        referred to the incident elevation at the reference point — the layout and convention of ``db.X``.
+        referred to the incident elevation at the reference point — the layout and convention of ``db.X``
+        (Nβ = ``len(directions)`` when given).
 
     Raises
     ------
@@ -149,7 +153,8 @@ def pile_scattered_excitation(db: HydroDB, position, heading_deg: float, pile_ra
         or below the sea bed.
     """
     a, h, pos, N, xg = _layout(db, position, heading_deg, pile_radius, water_depth)
-    theta = np.radians(db.wave_dir_deg + heading_deg)
+    beta = db.wave_dir_deg if directions is None else db.wave_dir_deg[np.asarray(directions, dtype=int)]
+    theta = np.radians(beta + heading_deg)
     field = cylinder_field(xg[:, 0], xg[:, 1], xg[:, 2], db.omega, theta, a, h, g=db.g, rho=db.rho,
                            part=part, tol=tol)
     F = -np.einsum("pfd,pj->jdf", field.p, N, optimize=True)  # (6, Nβ, Nω)

@@ -100,7 +100,7 @@ def slip_episodes(t, mode, tpos) -> list[SlipEpisode]:
     runs are found at once), so the cost is linear in the record whatever the number of episodes."""
     episodes = []
     mode = np.asarray(mode)
-    tpos = np.asarray(tpos)
+    tpos = np.ascontiguousarray(tpos, dtype=float)
     n = mode.shape[0]
     ended_by = {STICK: "re-stick", OPEN: "contact lost", OFF: "slid off the landing"}
     for c in range(mode.shape[1]):
@@ -114,7 +114,7 @@ def slip_episodes(t, mode, tpos) -> list[SlipEpisode]:
         closed = j_end < ends.size
         k1 = np.full(starts.size, n - 1)
         k1[closed] = ends[j_end[closed]]
-        dist, dv, dh = _largest_slides(np.ascontiguousarray(tpos[:, c], dtype=float), starts, k1)
+        dist, dv, dh = _largest_slides(tpos, c, starts, k1)
         why = [ended_by[int(x)] if ok else "end of run" for x, ok in zip(m[k1].tolist(), closed.tolist())]
         episodes += [SlipEpisode(c, float(ts), float(te), di, v, h, e) for ts, te, di, v, h, e in
                      zip(t[starts].tolist(), t[k1].tolist(), dist.tolist(), dv.tolist(), dh.tolist(), why)]
@@ -123,27 +123,64 @@ def slip_episodes(t, mode, tpos) -> list[SlipEpisode]:
 
 
 @numba.njit(cache=True)
-def _largest_slides(tpos, starts, ends):  # pragma: no cover - compiled
-    """For each slip run [k0, k1] of one contact (``tpos`` (n, 2)): the largest displacement from where it
-    stuck (row k0 − 1) and its (vertical, horizontal) parts at that row — the first row of the largest
+def _largest_slides(tpos, c, starts, ends):  # pragma: no cover - compiled
+    """For each slip run [k0, k1] of contact ``c`` (``tpos`` (n, Nc, 2)): the largest displacement from where
+    it stuck (row k0 − 1) and its (vertical, horizontal) parts at that row — the first row of the largest
     (NaN: the first NaN), as ``np.argmax`` of ``np.hypot``."""
     m = starts.size
     dist, dv, dh = np.empty(m), np.empty(m), np.empty(m)
     for e in range(m):
         k0, k1 = starts[e], ends[e]
-        r0, r1 = tpos[k0 - 1, 0], tpos[k0 - 1, 1]
+        r0, r1 = tpos[k0 - 1, c, 0], tpos[k0 - 1, c, 1]
         best, kb = -np.inf, k0
         for k in range(k0, k1 + 1):
-            v = math.hypot(tpos[k, 0] - r0, tpos[k, 1] - r1)
+            v = math.hypot(tpos[k, c, 0] - r0, tpos[k, c, 1] - r1)
             if np.isnan(v):
                 kb = k
                 break
             if v > best:
                 best, kb = v, k
-        dist[e] = math.hypot(tpos[kb, 0] - r0, tpos[kb, 1] - r1)
-        dv[e] = tpos[kb, 0] - r0
-        dh[e] = tpos[kb, 1] - r1
+        dist[e] = math.hypot(tpos[kb, c, 0] - r0, tpos[kb, c, 1] - r1)
+        dv[e] = tpos[kb, c, 0] - r0
+        dh[e] = tpos[kb, c, 1] - r1
     return dist, dv, dh
+
+
+@numba.njit(cache=True)
+def column_abs_max(x):  # pragma: no cover - compiled
+    """Largest |x| of each column of ``x`` (n, m), NaN where the column has a NaN: ``np.max(np.abs(x), axis=0)``
+    in one pass without the temporary (m zeros for n = 0)."""
+    n, m = x.shape
+    out = np.zeros(m)
+    nan = np.zeros(m, dtype=np.bool_)
+    for k in range(n):
+        for j in range(m):
+            v = abs(x[k, j])
+            if v > out[j]:
+                out[j] = v
+            elif v != v:
+                nan[j] = True
+    for j in range(m):
+        if nan[j]:
+            out[j] = np.nan
+    return out
+
+
+@numba.njit(cache=True)
+def all_touching_fraction(mode):  # pragma: no cover - compiled
+    """Fraction of the rows of ``mode`` (n, Nc) in which every contact touches (mode > 0):
+    ``(mode > 0).all(axis=1).mean()`` (NaN for n = 0)."""
+    n, nc = mode.shape
+    count = 0
+    for k in range(n):
+        ok = True
+        for c in range(nc):
+            if mode[k, c] <= 0:
+                ok = False
+                break
+        if ok:
+            count += 1
+    return count / n if n else np.nan
 
 
 @numba.njit(cache=True)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field, fields
+from functools import cached_property
 from pathlib import Path
 
 import numpy as np
@@ -10,8 +11,8 @@ import numpy as np
 from boatland.atomic import atomic_path
 from boatland.conventions import DOF_NAMES, DOF_UNITS
 from boatland.model.scenario_parts import Incidents
-from boatland.trial.events import (SLID_OFF, Event, SlipEpisode, first_exceedance, landing_offset,
-                                   worst_landing_offset)
+from boatland.trial.events import (SLID_OFF, Event, SlipEpisode, all_touching_fraction, column_abs_max,
+                                   first_exceedance, landing_offset, worst_landing_offset)
 
 __all__ = ["Result", "TrialSeries", "SERIES"]
 
@@ -111,6 +112,13 @@ class Result(TrialSeries):
     def _settle_row(self) -> int:
         return int(np.searchsorted(self.t, self.settled_at - 1e-9))
 
+    @cached_property
+    def peak_motions(self) -> np.ndarray:
+        """(6,) largest |x| of each DOF over the run [m, rad] (NaN where the run has a NaN), read only."""
+        peak = column_abs_max(np.asarray(self.x, dtype=float))
+        peak.flags.writeable = False
+        return peak
+
     def slip_events(self) -> list[Event]:
         """The stick → slip events after the settling (:attr:`settled_at`)."""
         t0 = self.settled_at - 1e-9
@@ -207,9 +215,9 @@ class Result(TrialSeries):
                                     default=0.0),
             "max_normal_force": None if not touching.any() else float(np.nanmax(fn)),
             "min_normal_force_in_contact": None if not touching.any() else float(np.nanmin(fn)),
-            "contact_fraction": float(touching.all(axis=1).mean()) if self.mode.shape[1] else 0.0,
+            "contact_fraction": float(all_touching_fraction(self.mode)) if self.mode.shape[1] else 0.0,
             "max_motions": {f"{n} [{'deg' if u == 'rad' else u}]": float(np.degrees(a) if u == "rad" else a)
-                            for n, u, a in zip(DOF_NAMES, DOF_UNITS, np.max(np.abs(self.x), axis=0))},
+                            for n, u, a in zip(DOF_NAMES, DOF_UNITS, self.peak_motions)},
             "incidents": self._incident_times(worst),
             "provenance": self.provenance,
         }

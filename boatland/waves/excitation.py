@@ -58,7 +58,8 @@ import numpy as np
 
 from boatland.waves.synthesis import component_phasors, harmonic_series
 
-__all__ = ["DIRECTION_ATOL_DEG", "PERIODIC_STEP_RTOL", "interpolate_excitation", "excitation_coefficients",
+__all__ = ["DIRECTION_ATOL_DEG", "PERIODIC_STEP_RTOL", "direction_brackets", "interpolate_excitation",
+           "excitation_coefficients",
            "excitation_series", "periodic_directions", "ramp"]
 
 #: Two directions closer than this [deg] are the same direction (a component "at" a tabulated one).
@@ -88,6 +89,56 @@ def periodic_directions(beta_deg) -> bool:
     if b.size < 2:
         return False
     return bool(360.0 - (b[-1] - b[0]) <= (1.0 + PERIODIC_STEP_RTOL) * float(np.max(np.diff(b))))
+
+
+def direction_brackets(beta_c_deg, beta_deg, periodic: bool | None = None):
+    r"""Where directions fall in a table of directions: the columns ``j``, ``j1`` and the weight ``wb`` of
+    :func:`interpolate_excitation`'s linear interpolation in β, :math:`(1 - w_b) X_j + w_b X_{j_1}`.
+
+    Parameters
+    ----------
+    beta_c_deg : ndarray, shape (N,)
+        Directions [deg] (any turn).
+    beta_deg : ndarray, shape (Nb,)
+        Table directions [deg], increasing within one turn.
+    periodic : bool, optional
+        As :func:`interpolate_excitation`.
+
+    Returns
+    -------
+    j, j1 : ndarray of int, shape (N,)
+        The two columns each direction reads (j1 = j when the table has one direction).
+    wb : ndarray, shape (N,)
+        Weight of column j1.
+    outside : ndarray of bool, shape (N,)
+        Directions a non-periodic table does not cover.
+    """
+    bc = np.asarray(beta_c_deg, dtype=float)
+    beta = np.asarray(beta_deg, dtype=float)
+    nb = beta.size
+    if periodic is None:
+        periodic = periodic_directions(beta)
+    outside = np.zeros(bc.size, dtype=bool)
+    if nb == 1:
+        j = j1 = np.zeros(bc.size, dtype=int)
+        wb = np.zeros(bc.size)
+        if not periodic:
+            outside = np.abs(np.mod(bc - beta[0] + 180.0, 360.0) - 180.0) > DIRECTION_ATOL_DEG
+    elif periodic:
+        # periodic bracket [ext[j], ext[j+1]] with ext = beta ∪ {beta[0] + 360}
+        ext = np.append(beta, beta[0] + 360.0)
+        b = beta[0] + np.mod(bc - beta[0], 360.0)
+        j = np.clip(np.searchsorted(ext, b, side="right") - 1, 0, nb - 1)
+        wb = np.clip((b - ext[j]) / (ext[j + 1] - ext[j]), 0.0, 1.0)
+        j1 = (j + 1) % nb
+    else:
+        # the turn that starts just below beta[0]; known on [beta[0], beta[-1]] only
+        b = beta[0] - DIRECTION_ATOL_DEG + np.mod(bc - beta[0] + DIRECTION_ATOL_DEG, 360.0)
+        outside = b > beta[-1] + DIRECTION_ATOL_DEG
+        j = np.clip(np.searchsorted(beta, b, side="right") - 1, 0, nb - 2)
+        wb = np.clip((b - beta[j]) / (beta[j + 1] - beta[j]), 0.0, 1.0)
+        j1 = j + 1
+    return j, j1, wb, outside
 
 
 def interpolate_excitation(omega_c, beta_c_deg, omega, beta_deg, X, periodic: bool | None = None):
@@ -123,7 +174,7 @@ def interpolate_excitation(omega_c, beta_c_deg, omega, beta_deg, X, periodic: bo
     beta = np.asarray(beta_deg, dtype=float)
     bc = np.asarray(beta_c_deg, dtype=float)
     X = np.asarray(X, dtype=complex)
-    nf, nb = om.size, beta.size
+    nf = om.size
     if periodic is None:
         periodic = periodic_directions(beta)
     # ω: index i and weight f on [omega[i], omega[i+1]]
@@ -135,26 +186,7 @@ def interpolate_excitation(omega_c, beta_c_deg, omega, beta_deg, X, periodic: bo
         f = np.clip((wc - om[i]) / (om[i + 1] - om[i]), 0.0, 1.0)
     below = wc < om[0]
     above = wc > om[-1]
-    outside = np.zeros(wc.size, dtype=bool)
-    if nb == 1:
-        j = j1 = np.zeros(wc.size, dtype=int)
-        wb = np.zeros(wc.size)
-        if not periodic:
-            outside = np.abs(np.mod(bc - beta[0] + 180.0, 360.0) - 180.0) > DIRECTION_ATOL_DEG
-    elif periodic:
-        # periodic bracket [ext[j], ext[j+1]] with ext = beta ∪ {beta[0] + 360}
-        ext = np.append(beta, beta[0] + 360.0)
-        b = beta[0] + np.mod(bc - beta[0], 360.0)
-        j = np.clip(np.searchsorted(ext, b, side="right") - 1, 0, nb - 1)
-        wb = np.clip((b - ext[j]) / (ext[j + 1] - ext[j]), 0.0, 1.0)
-        j1 = (j + 1) % nb
-    else:
-        # the turn that starts just below beta[0]; known on [beta[0], beta[-1]] only
-        b = beta[0] - DIRECTION_ATOL_DEG + np.mod(bc - beta[0] + DIRECTION_ATOL_DEG, 360.0)
-        outside = b > beta[-1] + DIRECTION_ATOL_DEG
-        j = np.clip(np.searchsorted(beta, b, side="right") - 1, 0, nb - 2)
-        wb = np.clip((b - beta[j]) / (beta[j + 1] - beta[j]), 0.0, 1.0)
-        j1 = j + 1
+    j, j1, wb, outside = direction_brackets(bc, beta, periodic)
     i1 = np.minimum(i + 1, nf - 1)
     lo = (1.0 - f) * X[:, j, i] + f * X[:, j, i1]
     hi = (1.0 - f) * X[:, j1, i] + f * X[:, j1, i1]

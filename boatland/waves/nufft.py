@@ -28,6 +28,22 @@ relative to :math:`\sum_i |\tilde c_i|`. Cost: :math:`(2M_{sp}+1)\,N` for the gr
 :math:`M \approx 2 n_t` points per two outputs — :math:`O(N + n_t \log n_t)`, linear-logarithmic in
 the duration whatever N.
 
+The FFT of a grid whose points fill an arc (four steps, pruned input)
+    Sea-state frequencies fill only an arc of the circle: :math:`|x_i| \le w` with
+    :math:`w = \omega_{max} h` (0.17 rad for 6.7 rad/s at h = 0.025 s, against 2π), so the gridded
+    sequence g is zero outside the window :math:`|j| \le S = \lceil wM/2\pi\rceil + M_{sp} + 1`. With
+    :math:`M = M_1 M_2`, :math:`M_1 \ge 2S + 1` and :math:`k = k_2 + M_2 k_1`,
+
+    .. math:: G(k_2 + M_2 k_1) = \frac{1}{M}\sum_{j=-S}^{M_1-S-1} \Big[g_j\, e^{2\pi i j k_2/M}\Big]
+              e^{2\pi i j k_1/M_1},
+
+    i.e. :math:`M_2` FFTs of length :math:`M_1` of the twiddled window — the four-step FFT (Bailey
+    1990) whose first step is trivial because the input has one nonzero block. The same M log M work
+    in transforms of a few hundred kB that stay in cache (≈ 3× faster here than one transform of
+    12.8 MB for a 10 000-s record). The twiddle :math:`e^{2\pi i j k_2/M}` is the product of two
+    tabulated factors, each rounded once from the exact integer phase :math:`(j k_2 \bmod M)`; with
+    :math:`M_2 = 1` (points all round the circle, or short records) it is the plain FFT.
+
 Round-off
     The centre phase :math:`\omega_i t_c` is formed in two doubles (Dekker's exact product, Knuth's
     sum): at :math:`t_c \sim 5000` s a double holds :math:`\omega t_c` only to ~1e-12 rad, and every
@@ -66,18 +82,21 @@ Dutt, A. & Rokhlin, V. (1993). Fast Fourier transforms for nonequispaced data. S
 transform. SIAM Review 46(3), 443–454. Dekker, T. J. (1971). A floating-point technique for extending
 the available precision. Numer. Math. 18, 224–242. Barnett, A. H., Magland, J. & af Klinteberg, L.
 (2019). A parallel nonuniform fast Fourier transform library based on an "exponential of semicircle"
-kernel. SIAM J. Sci. Comput. 41(5), C479–C504.
+kernel. SIAM J. Sci. Comput. 41(5), C479–C504. Bailey, D. H. (1990). FFTs in external or hierarchical
+memory. J. Supercomputing 4(1), 23–35.
 """
 
 from __future__ import annotations
 
 import math
+from functools import lru_cache
+from typing import NamedTuple
 
 import numba
 import numpy as np
 from scipy import fft as sfft
 
-__all__ = ["M_SP", "R_OVERSAMPLE", "nufft_grid", "harmonic_sum_nufft"]
+__all__ = ["M_SP", "R_OVERSAMPLE", "Layout", "nufft_grid", "nufft_layout", "harmonic_sum_nufft"]
 
 #: Gaussian half-width in grid points (error ≈ exp(−π M_sp (R − 1)/(R − ½)) of Σ|c|).
 M_SP = 16
@@ -89,18 +108,51 @@ _TWO_PI_HI = 2.0 * math.pi
 _TWO_PI_LO = 2.4492935982947064e-16
 
 
-def nufft_grid(n: int, M_sp: int = M_SP, R: float = R_OVERSAMPLE) -> tuple[int, int, int, float]:
-    r"""Layout of the transform for ``n`` times: ``(n_c, K, M, tau)``.
+class Layout(NamedTuple):
+    """How :func:`harmonic_sum_nufft` lays out the transform of ``n`` times (module docstring): centre
+    sample ``n_c``, mode range ``K`` (|k| ≤ K/2), FFT length ``M = M1 M2`` (``M2`` transforms of length
+    ``M1``), the half-width ``S`` of the window of grid points the Gaussians reach, and τ."""
 
-    n_c = ⌊n/2⌋ is the centre sample, K = 2 max(n_c, n − n_c) the mode range (|k| ≤ K/2), M ≥ R K the
-    FFT length (``scipy.fft.next_fast_len``), τ = π M_sp / (M (M − K/2)) the Gaussian's variance
-    parameter (module docstring).
+    n_c: int
+    K: int
+    M1: int
+    M2: int
+    S: int
+    tau: float
+
+    @property
+    def M(self) -> int:
+        return self.M1 * self.M2
+
+
+def nufft_layout(n: int, half_width: float = math.pi, M_sp: int = M_SP, R: float = R_OVERSAMPLE) -> Layout:
+    r"""Layout of the transform for ``n`` times and points within ``half_width`` [rad] of 0 on the circle.
+
+    n_c = ⌊n/2⌋, K = 2 max(n_c, n − n_c), τ = π M_sp / (M (M − K/2)) (Greengard & Lee 2004) as for one
+    FFT; M = M1 M2 ≥ R K with M1 a fast FFT length (``scipy.fft.next_fast_len``) that holds the window
+    |j| ≤ S = ⌈half_width M/2π⌉ + M_sp + 1 (M1 ≥ 2S + 1), as many transforms M2 as that allows.
+    ``half_width = π`` (points anywhere) gives M2 = 1 and M = next_fast_len(R K): one FFT.
     """
     n_c = n // 2
     K = 2 * max(n_c, n - n_c)
-    M = sfft.next_fast_len(max(int(math.ceil(R * K)), 8))
-    tau = math.pi * M_sp / (M * (M - 0.5 * K))
-    return n_c, K, M, tau
+    target = max(int(math.ceil(R * K)), 8)
+    frac = min(max(float(half_width), 0.0), math.pi) / math.pi
+    M2 = max(1, int(target // (frac * target + 2 * M_sp + 4)))
+    while True:
+        M1 = sfft.next_fast_len(-(-target // M2))
+        S = int(math.ceil(half_width * (M1 * M2) / _TWO_PI_HI)) + M_sp + 1
+        if M2 == 1 or M1 >= 2 * S + 1:
+            break
+        M2 -= 1
+    M = M1 * M2
+    return Layout(n_c, K, M1, M2, min(S, M1), math.pi * M_sp / (M * (M - 0.5 * K)))
+
+
+def nufft_grid(n: int, M_sp: int = M_SP, R: float = R_OVERSAMPLE,
+               half_width: float = math.pi) -> tuple[int, int, int, float]:
+    r"""``(n_c, K, M, tau)`` of :func:`nufft_layout` (M = M1 M2 the length of the whole FFT grid)."""
+    lay = nufft_layout(n, half_width, M_sp, R)
+    return lay.n_c, lay.K, lay.M, lay.tau
 
 
 def _reduced(omega, h):
@@ -178,18 +230,67 @@ def _spread(u, q, alpha, M_sp, g):
                 g[(base + l) % M] += w[l] * qp
 
 
+@lru_cache(maxsize=8)
+def _twiddles(M1: int, M2: int, S: int) -> tuple[int, np.ndarray, np.ndarray]:
+    r"""``(P, T_lo, T_hi)`` with :math:`e^{2\pi i j k_2/M} = T_{lo}[k_2, l]\,T_{hi}[k_2, q]` for
+    :math:`j + S = qP + l`, :math:`0 \le l < P`: each factor rounded once from its exact integer phase
+    (the phase reduced mod M in integers). Kept per layout: a campaign's trials share their length."""
+    M = M1 * M2
+    P = max(1, math.isqrt(M1))
+    k2 = np.arange(M2, dtype=np.int64)[:, None]
+    lo = np.arange(P, dtype=np.int64)[None, :]
+    hi = np.arange(-(-M1 // P), dtype=np.int64)[None, :] * P - S
+    T_lo = np.exp(1j * (_TWO_PI_HI / M) * ((lo * k2) % M))
+    T_hi = np.exp(1j * (_TWO_PI_HI / M) * ((hi * k2) % M))
+    return P, T_lo, T_hi
+
+
+@lru_cache(maxsize=8)
+def _deconvolution(n: int, n_c: int, tau: float, M2: int) -> np.ndarray:
+    r""":math:`2\pi/\hat\varphi(k)\,/M_2 = \sqrt{\pi/\tau}\,e^{k^2\tau}/M_2` for k = −n_c … n − 1 − n_c
+    (the 1/M2 completes the 1/M1 of each transform to the 1/M of the whole). Read only."""
+    k = np.arange(-n_c, n - n_c, dtype=float)
+    scale = (math.sqrt(math.pi / tau) / M2) * np.exp(k * k * tau)
+    scale.flags.writeable = False
+    return scale
+
+
+@numba.njit(cache=True)
+def _twiddled(g, S, P, T_lo, T_hi, rows):
+    r"""rows[k2, j mod M1] = g[j mod M1] e^{2πi j k2/M} for j = −S … M1 − S − 1 (the window)."""
+    M2, M1 = rows.shape
+    for k2 in range(M2):
+        js = 0                                  # j + S
+        for q in range(T_hi.shape[1]):
+            th = T_hi[k2, q]
+            for l in range(P):
+                if js >= M1:
+                    break
+                jj = js - S
+                if jj < 0:
+                    jj += M1
+                rows[k2, jj] = g[jj] * (T_lo[k2, l] * th)
+                js += 1
+
+
 @numba.njit(cache=True)
 def _extract(G, scale, n_c, s_a, j_a, s_b, j_b, out):
-    """out[n, j_a] = s_a Re f, out[n, j_b] = s_b Im f (j_b < 0: none), f = scale[n] G[(n − n_c) mod M]."""
-    M = G.size
+    """out[n, j_a] = s_a Re f, out[n, j_b] = s_b Im f (j_b < 0: none), f = scale[n] G(k), k = (n − n_c) mod M,
+    G(k2 + M2 k1) = G[k2, k1]."""
+    M2, M1 = G.shape
+    k = M1 * M2 - n_c if n_c > 0 else 0
+    k1, k2 = k // M2, k % M2
     for n in range(out.shape[0]):
-        idx = n - n_c
-        if idx < 0:
-            idx += M
-        f = G[idx] * scale[n]
+        f = G[k2, k1] * scale[n]
         out[n, j_a] = s_a * f.real
         if j_b >= 0:
             out[n, j_b] = s_b * f.imag
+        k2 += 1
+        if k2 == M2:
+            k2 = 0
+            k1 += 1
+            if k1 == M1:
+                k1 = 0
 
 
 def harmonic_sum_nufft(omega, c, t0: float, h: float, n: int, M_sp: int = M_SP,
@@ -224,12 +325,42 @@ def harmonic_sum_nufft(omega, c, t0: float, h: float, n: int, M_sp: int = M_SP,
     out = np.zeros((n, m))
     if n == 0 or omega.size == 0 or m == 0:
         return out
-    n_c, K, M, tau = nufft_grid(n, M_sp, R)
     s = np.sum(np.abs(c), axis=1)                       # ℓ1 scale of each output
     out[:, ~np.isfinite(s)] = np.nan                    # NaN or infinite amplitudes: NaN, as the direct sum
     live = np.flatnonzero(np.isfinite(s) & (s > 0))     # (and kept apart from the other outputs)
     if live.size == 0:
         return out
+    x = _reduced(omega, float(h))
+    if not np.all(np.isfinite(x)):                      # NaN or infinite ω: NaN, as the direct sum
+        out[:, live] = np.nan
+        return out
+    # the arc |x| ≤ w the points ±x_i fill decides how the FFT is split (module docstring)
+    lay = nufft_layout(n, float(np.max(np.minimum(x, _TWO_PI_HI - x))), M_sp, R)
+    n_c, K, M, tau = lay.n_c, lay.K, lay.M, lay.tau
+    ct = c[live] * _centre_phasor(omega, float(t0), n_c, float(h))[None, :] / s[live, None]
+    # points +x_i and −x_i in grid units u = x M/2π (no reduction of −x: an error of 2π's last bit
+    # would become a phase error k·δx); Gaussian exp(−(x − 2πj/M)²/4τ) = exp(−α (u − j)²), written at
+    # j mod M1 (the window |j| ≤ S fits in M1) in increasing u: in order, cache-friendly
+    u = np.concatenate([x, -x]) * (M / _TWO_PI_HI)
+    order = np.argsort(u, kind="stable")
+    u = u[order]
+    alpha = math.pi * (M - 0.5 * K) / (M * M_sp)
+    scale = _deconvolution(n, n_c, tau, lay.M2)
+    P, T_lo, T_hi = _twiddles(lay.M1, lay.M2, lay.S)
+    g = np.empty(lay.M1, dtype=complex)
+    rows = np.empty((lay.M2, lay.M1), dtype=complex)
+    for pair in range(0, live.size, 2):
+        ja = live[pair]
+        jb = live[pair + 1] if pair + 1 < live.size else -1
+        a = ct[pair]
+        b = ct[pair + 1] if jb >= 0 else np.zeros_like(a)
+        q = np.concatenate([0.5 * (a + 1j * b), 0.5 * (np.conj(a) + 1j * np.conj(b))])[order]
+        g[:] = 0.0
+        _spread(u, q, alpha, M_sp, g)
+        _twiddled(g, lay.S, P, T_lo, T_hi, rows)
+        G = sfft.ifft(rows, axis=1, workers=1, overwrite_x=True)   # G(k2 + M2 k1) = G[k2, k1]
+        _extract(G, scale, n_c, s[ja], ja, s[jb] if jb >= 0 else 0.0, jb, out)
+    return out
     ct = c[live] * _centre_phasor(omega, float(t0), n_c, float(h))[None, :] / s[live, None]
     # points +x_i and −x_i in grid units u = x M/2π (no reduction of −x: an error of 2π's last bit
     # would become a phase error k·δx); Gaussian exp(−(x − 2πj/M)²/4τ) = exp(−α (u − j)²)

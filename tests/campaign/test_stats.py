@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from scipy import stats
 
-from boatland.campaign.stats import clopper_pearson, exponential_mean_interval, limiting_hs
+from boatland.campaign.stats import beta_ppf, chi2_ppf, clopper_pearson, exponential_mean_interval, limiting_hs
 
 
 @pytest.mark.parametrize("k, n", [(0, 8), (3, 8), (8, 8), (17, 40)])
@@ -90,3 +90,22 @@ def test_seeds_for_width_is_the_fewest_that_give_the_width(p, width):
     assert hi - lo <= width
     _, lo, hi = clopper_pearson(round(p * (n - 1)), n - 1)
     assert hi - lo > width
+
+
+def test_quantiles_are_scipy_stats_values_to_the_bit():
+    """The campaign's quantiles come from scipy.special (no 1.2-s import of scipy.stats per campaign
+    process); they are the very values scipy.stats gives, over the counts and confidences campaigns use."""
+    from scipy import special
+
+    for n in [*range(1, 41), 72, 100, 1000, 10_000]:
+        k = np.arange(0, n + 1, max(1, n // 40))
+        for a in (0.01, 0.05, 0.1, 0.3173):
+            lo_k = np.maximum(k, 1)
+            assert np.array_equal(beta_ppf(a / 2, lo_k, n - k + 1), stats.beta.ppf(a / 2, lo_k, n - k + 1))
+            hi_k = np.minimum(k, n - 1)
+            assert np.array_equal(beta_ppf(1 - a / 2, hi_k + 1, n - hi_k), stats.beta.ppf(1 - a / 2, hi_k + 1, n - hi_k))
+    df = np.arange(2, 2002, 2)
+    for q in (0.005, 0.025, 0.05, 0.95, 0.975, 0.995):
+        assert np.array_equal(chi2_ppf(q, df), stats.chi2.ppf(q, df))
+    q = np.linspace(0.5, 0.999, 500)
+    assert np.array_equal(special.ndtri(q), stats.norm.ppf(q))        # the ISEE's z

@@ -187,3 +187,20 @@ def test_sea_response_adds_the_wave_systems(landing):
     narrow = sea_response(db, s, [SpectrumPart(Hs=0.15, Tp=12.0, gamma=5.0, direction_deg=150.0, spreading=2000.0)],
                           spreading_step_deg=0.5)
     np.testing.assert_allclose(narrow.sigma, one[0].sigma, rtol=0.01)
+
+
+def test_pile_wave_on_the_columns_the_directions_read_gives_the_same_excitation(landing):
+    """The screening adds the pile's scattered wave only to the columns of the table that the interpolation
+    at its directions reads (issue 16: 3 of 72 directions of the ctv24 mesh instead of all): the excitation
+    there is the whole table's to the bit — on a tabulated direction, between two and across 360°."""
+    from boatland.freqdomain.rao import excitation_force
+
+    db, s = landing
+    assert s.pile is not None and db.n_dir == 72
+    full = s.near_pile(db)
+    w = np.linspace(0.3, 3.0, 40)
+    for beta in ([180.0], [37.3], [357.5, 2.5, 90.0]):
+        part = s.near_pile(db, beta)
+        changed = np.flatnonzero(np.any(part.X != db.X, axis=(0, 2)))
+        assert 1 <= changed.size <= 2 * len(beta)                     # only the brackets' columns
+        assert np.array_equal(excitation_force(part, w, beta), excitation_force(full, w, beta))

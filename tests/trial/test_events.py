@@ -127,3 +127,17 @@ def test_one_pass_events_episodes_and_offsets_equal_the_loops_bit_for_bit(seed):
     off = landing_offset(mode, tpos, k_start=7)
     expected = np.where(np.isnan(off), 0.0, off).max(axis=1)
     assert worst_landing_offset(mode, tpos, k_start=7).tobytes() == expected.tobytes()
+
+
+def test_column_abs_max_and_touching_fraction_are_the_numpy_reductions():
+    """The summary's compiled passes (issue 16) give numpy's values: NaN where a column has one."""
+    from boatland.trial.events import all_touching_fraction, column_abs_max
+
+    rng = np.random.default_rng(4)
+    x = rng.normal(size=(1001, 6))
+    assert np.array_equal(column_abs_max(x), np.max(np.abs(x), axis=0))
+    x[[0, 500, 1000], [1, 3, 5]] = np.nan
+    assert np.array_equal(column_abs_max(x), np.max(np.abs(x), axis=0), equal_nan=True)
+    for nc in (1, 2, 3):
+        mode = rng.integers(0, 4, size=(999, nc))
+        assert all_touching_fraction(mode) == (mode > 0).all(axis=1).mean()

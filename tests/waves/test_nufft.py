@@ -14,7 +14,7 @@ import pytest
 from scipy import fft as sfft
 
 from boatland.model.seastate import SeaState, SpectrumPart
-from boatland.waves.nufft import M_SP, R_OVERSAMPLE, harmonic_sum_nufft, nufft_grid
+from boatland.waves.nufft import M_SP, R_OVERSAMPLE, harmonic_sum_nufft, nufft_grid, nufft_layout
 from boatland.waves.synthesis import harmonic_sum
 
 RTOL = 1e-9  # of each output's RMS (issue 16)
@@ -72,6 +72,33 @@ def test_gaussian_parameters_follow_greengard_and_lee():
     assert tau == pytest.approx(math.pi * M_SP / (M * (M - K / 2)), rel=1e-15)
     # balanced truncation and aliasing: exp(−π M_sp (R − 1)/(R − ½)) at R = 2 is ~3e-15
     assert math.exp(-math.pi * M_SP * (2 - 1) / (2 - 0.5)) < 1e-14
+
+
+def test_the_fft_is_split_where_the_points_fill_an_arc():
+    """Sea frequencies fill an arc |x| ≤ ω_max h of the circle: M = M1 M2 with M2 transforms of a fast
+    length M1 that holds the window of grid points the Gaussians reach; points anywhere: one FFT."""
+    n = 401_361                                            # a 10 000-s trial's half-step grid
+    lay = nufft_layout(n, 6.72 * 0.025)
+    assert lay.M2 > 1 and lay.M1 == sfft.next_fast_len(lay.M1) and lay.M >= R_OVERSAMPLE * lay.K
+    assert lay.M1 >= 2 * lay.S + 1 and lay.S >= 6.72 * 0.025 * lay.M / (2 * math.pi) + M_SP
+    one = nufft_layout(n, math.pi)
+    assert one.M2 == 1 and one.M == sfft.next_fast_len(int(math.ceil(R_OVERSAMPLE * one.K)))
+    assert nufft_grid(n) == (one.n_c, one.K, one.M, one.tau)
+
+
+def test_split_and_single_fft_agree_to_round_off():
+    """The same sums with the FFT split (a sea's arc) and whole (one zero-amplitude component near the
+    Nyquist frequency widens the arc to the circle): equal to round-off of Σ|c|, over a 10 000-s grid.
+    (The realisation is the same; the bits of a long series changed with the split in issue 16.)"""
+    rng = np.random.default_rng(8)
+    w, c = random_sum(rng, 3000, m=3, lo=0.4, hi=4.0)
+    n, h = 400_001, 0.025
+    split = harmonic_sum_nufft(w, c, 0.0, h, n)
+    w1 = np.append(w, 0.99 * math.pi / h)
+    whole = harmonic_sum_nufft(w1, np.concatenate([c, np.zeros((3, 1))], axis=1), 0.0, h, n)
+    assert nufft_layout(n, float(w.max() * h)).M2 > 1 and nufft_layout(n, 0.99 * math.pi).M2 == 1
+    l1 = np.sum(np.abs(c), axis=1)
+    assert np.all(np.max(np.abs(split - whole), axis=0) / l1 < phase_bound(w, n * h / 2) + 1e-14)
 
 
 @pytest.mark.parametrize("n", [1, 2, 3, 4, 17, 1000, 1001])
