@@ -326,7 +326,7 @@ def _summary_row(result, t0: float, duration: float, names: list[str]) -> dict:
 
 def run_campaign(campaign: Campaign, store_path: str | Path, *, loaders, executor: str = "local",
                  workers: int | None = None, scheduler: str | None = None, progress=None,
-                 connect_timeout: float = 10.0) -> CampaignStore:
+                 connect_timeout: float = 10.0, screening: "BackgroundScreening | None" = None) -> CampaignStore:
     """Run every trial of ``campaign`` not yet in the store at ``store_path``.
 
     Parameters
@@ -344,33 +344,37 @@ def run_campaign(campaign: Campaign, store_path: str | Path, *, loaders, executo
         Address of a Dask scheduler (``tcp://host:port``) for ``executor="dask"``.
     progress : callable, optional
         ``progress(done, total)`` after each trial.
+    screening : BackgroundScreening, optional
+        The frequency-domain screening already started by :func:`start_screening` for this campaign (the
+        CLI starts it before its checks, on the core they leave idle); closed here. Default: started here
+        (in a process of its own when the trials run in other processes).
 
     Returns
     -------
     CampaignStore
         Finished: every row and the per-case statistics written.
     """
-    names = incident_names(campaign)
-    header = {
-        "campaign": campaign.name, "campaign_digest": campaign.digest(),
-        "campaign_file": Path(campaign.source).read_text(encoding="utf-8"),
-        "plan": _plan_json(campaign), "n_trials": campaign.n_trials, "incidents": "\n".join(names),
-        "inputs": json.dumps(campaign_inputs(campaign), default=float),   # for the report's titles
-    }
-    if executor == "dask":
-        _check_scheduler_address(scheduler)
-    check_cases(campaign, loaders[1])
-    store = CampaignStore.open(store_path, header, names)
     try:
-        todo = [s for s in campaign.trials() if s.trial not in store.done()]
-        total = campaign.n_trials
-        if progress:
-            progress(total - len(todo), total)
-        keep = str(store.series_dir) if campaign.keep_series else None
-        source = str(Path(campaign.source).resolve())
-        inline = executor == "local" and (workers or os.cpu_count() or 1) == 1
-        screening = _BackgroundScreening(campaign, loaders) if todo and not inline else None
+        names = incident_names(campaign)
+        header = {
+            "campaign": campaign.name, "campaign_digest": campaign.digest(),
+            "campaign_file": Path(campaign.source).read_text(encoding="utf-8"),
+            "plan": _plan_json(campaign), "n_trials": campaign.n_trials, "incidents": "\n".join(names),
+            "inputs": json.dumps(campaign_inputs(campaign), default=float),   # for the report's titles
+        }
+        if executor == "dask":
+            _check_scheduler_address(scheduler)
+        check_cases(campaign, loaders[1])
+        store = CampaignStore.open(store_path, header, names)
         try:
+            todo = [s for s in campaign.trials() if s.trial not in store.done()]
+            total = campaign.n_trials
+            if progress:
+                progress(total - len(todo), total)
+            keep = str(store.series_dir) if campaign.keep_series else None
+            source = str(Path(campaign.source).resolve())
+            if screening is None and todo:
+                screening = start_screening(campaign, loaders, executor, workers)
             shared = _CasePreparation(campaign, loaders[1])   # each case's data when its first trial is sent
             if todo and executor == "local":        # forked workers inherit the campaign and databases
                 _context(source, loaders)["db"].update(shared.checked["dbs"])
@@ -383,13 +387,24 @@ def run_campaign(campaign: Campaign, store_path: str | Path, *, loaders, executo
             finally:
                 rows.close()               # an error above cancels the queued trials and stops the workers
             p_fd, why = screening.result() if screening is not None else _screening_job(campaign, loaders)
+            store.finish(case_statistics(campaign, store.table(), names, screening=p_fd, screening_notes=why))
         finally:
-            if screening is not None:
-                screening.close()
-        store.finish(case_statistics(campaign, store.table(), names, screening=p_fd, screening_notes=why))
+            store.close()
     finally:
-        store.close()
+        if screening is not None:          # stopped now if the campaign stopped early
+            screening.close()
     return store
+
+
+def start_screening(campaign: Campaign, loaders, executor: str = "local",
+                    workers: int | None = None) -> "BackgroundScreening | None":
+    """The campaign's frequency-domain screening (:func:`_screening`) started in a process of its own,
+    to run beside the trials — or None when the trials run in this process (one local worker: the
+    screening then runs after them, here). Pass it to :func:`run_campaign`; :meth:`BackgroundScreening.close`
+    it if the campaign does not run."""
+    if executor == "local" and (workers or os.cpu_count() or 1) == 1:
+        return None
+    return BackgroundScreening(campaign, loaders)
 
 
 def _screening_job(campaign: Campaign, loaders) -> tuple[np.ndarray, list[str]]:
@@ -397,7 +412,7 @@ def _screening_job(campaign: Campaign, loaders) -> tuple[np.ndarray, list[str]]:
         return _screening(campaign, loaders)
 
 
-class _BackgroundScreening:
+class BackgroundScreening:
     """:func:`_screening` in a process of its own, started before the trials: with several workers (or
     Dask) it runs beside them instead of after them. Pinned to one BLAS thread like every trial, so its
     figures are the ones the campaign's own process would compute; if the process cannot give them,

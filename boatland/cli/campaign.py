@@ -46,7 +46,7 @@ def add_parser(sub) -> None:
 def cmd(args) -> int:
     from boatland.campaign import load_campaign, run_campaign
     from boatland.campaign.report import REPORT_FILES, write_report
-    from boatland.campaign.runner import check_cases, failures
+    from boatland.campaign.runner import check_cases, failures, start_screening
     from boatland.cli.common import check_memory
     from boatland.scenario_check import load, resolve_database
 
@@ -75,13 +75,22 @@ def cmd(args) -> int:
     check_outputs([Output("-o", store), *[Output("-o (its side file)", p) for p in side],
                    Output("--report", args.report, "folder", REPORT_FILES),
                    Output("--save-worst", worst_dir, "folder")], campaign.input_files())
-    for w in check_cases(campaign, resolve_database):
-        print(f"warning: {w}", file=sys.stderr)
     workers = 1 if args.scheduler else (args.workers or os.cpu_count() or 1)
-    longest = max((campaign.scenario_for(campaign.trials()[c * campaign.seeds]) for c in range(len(campaign.cases))),
-                  key=lambda s: s.simulation.duration)
-    check_memory(longest, resolve_database(longest), flag=f"{args.campaign}: duration",
-                 copies=min(workers, campaign.n_trials))
+    # the frequency-domain screening needs none of the checks below: started first, it runs on the core
+    # they leave idle (stopped if they refuse the campaign)
+    screening = None if isee else start_screening(campaign, (load, resolve_database),
+                                                  "dask" if args.scheduler else "local", args.workers)
+    try:
+        for w in check_cases(campaign, resolve_database):
+            print(f"warning: {w}", file=sys.stderr)
+        longest = max((campaign.scenario_for(campaign.trials()[c * campaign.seeds])
+                       for c in range(len(campaign.cases))), key=lambda s: s.simulation.duration)
+        check_memory(longest, resolve_database(longest), flag=f"{args.campaign}: duration",
+                     copies=min(workers, campaign.n_trials))
+    except BaseException:
+        if screening is not None:
+            screening.close()
+        raise
     where = f"Dask scheduler {args.scheduler}" if args.scheduler else \
         f"{args.workers or os.cpu_count()} local worker process(es)"
     if isee:
@@ -114,7 +123,7 @@ def cmd(args) -> int:
 
         result = run_campaign(campaign, store, loaders=(load, resolve_database),
                               executor="dask" if args.scheduler else "local", workers=args.workers,
-                              scheduler=args.scheduler, progress=progress)
+                              scheduler=args.scheduler, progress=progress, screening=screening)
     table = result.table()
     failed = failures(campaign, table)
     n_failed = sum(len(v) for v in failed.values())

@@ -183,24 +183,32 @@ def all_touching_fraction(mode):  # pragma: no cover - compiled
     return count / n if n else np.nan
 
 
-@numba.njit(cache=True)
-def _row_max(off):  # pragma: no cover - compiled
-    """Largest value of each row, NaN counted as 0 (values ≥ 0): ``np.where(np.isnan(off), 0, off).max(1)``."""
-    n, nc = off.shape
-    out = np.zeros(n)
-    for k in range(n):
-        w = 0.0
-        for c in range(nc):
-            v = off[k, c]
-            if v > w:
-                w = v
-        out[k] = w
-    return out
-
-
 def worst_landing_offset(mode, tpos, k_start: int = 0) -> np.ndarray:
-    """Largest :func:`landing_offset` over the contacts at each step (0 where none has landed): (n,)."""
-    return _row_max(landing_offset(mode, tpos, k_start))
+    """Largest :func:`landing_offset` over the contacts at each step (0 where none has landed): (n,) —
+    the row maxima of :func:`landing_offset` (NaN as 0) in one compiled pass, without the (n, Nc) offsets."""
+    mode = np.asarray(mode)
+    if not np.issubdtype(mode.dtype, np.integer):
+        mode = mode.astype(np.int64)
+    return _worst_offset(mode, np.ascontiguousarray(tpos, dtype=float), int(k_start))
+
+
+@numba.njit(cache=True)
+def _worst_offset(mode, tpos, k_start):  # pragma: no cover - compiled
+    """Per row, the largest offset of :func:`track_landing` over the contacts (0 where none has landed)."""
+    n, nc = mode.shape
+    out = np.zeros(n)
+    for c in range(nc):
+        a0, a1 = np.nan, np.nan
+        for k in range(max(k_start, 0), n):
+            m = mode[k, c]
+            if np.isnan(a0) and m == STICK:
+                a0 = tpos[k, c, 0]
+                a1 = tpos[k, c, 1]
+            if (m == STICK or m == SLIP) and not np.isnan(a0):
+                v = np.hypot(tpos[k, c, 0] - a0, tpos[k, c, 1] - a1)
+                if v > out[k]:
+                    out[k] = v
+    return out
 
 
 @numba.njit(cache=True)

@@ -259,18 +259,16 @@ def _deconvolution(n: int, n_c: int, tau: float, M2: int) -> np.ndarray:
 def _twiddled(g, S, P, T_lo, T_hi, rows):
     r"""rows[k2, j mod M1] = g[j mod M1] e^{2πi j k2/M} for j = −S … M1 − S − 1 (the window)."""
     M2, M1 = rows.shape
+    tw = np.empty(T_hi.shape[1] * P, dtype=np.complex128)   # e^{2πi j k2/M} at j + S = 0 … M1 − 1
     for k2 in range(M2):
-        js = 0                                  # j + S
         for q in range(T_hi.shape[1]):
             th = T_hi[k2, q]
             for l in range(P):
-                if js >= M1:
-                    break
-                jj = js - S
-                if jj < 0:
-                    jj += M1
-                rows[k2, jj] = g[jj] * (T_lo[k2, l] * th)
-                js += 1
+                tw[q * P + l] = T_lo[k2, l] * th
+        for jj in range(M1 - S):                  # j = jj ≥ 0
+            rows[k2, jj] = g[jj] * tw[jj + S]
+        for jj in range(M1 - S, M1):              # j = jj − M1 < 0
+            rows[k2, jj] = g[jj] * tw[jj + S - M1]
 
 
 @numba.njit(cache=True)
