@@ -143,6 +143,20 @@ def test_bad_campaign_files_are_one_clear_error(tmp_path, extra, expected):
     assert r.returncode == 2 and expected in r.stderr and "Traceback" not in r.stderr, r.stderr
 
 
+def test_a_campaign_the_checks_refuse_stops_the_screening_started_before_them(tmp_path):
+    """The CLI starts the frequency-domain screening before its checks (issue 16: on the core they leave
+    idle); when a case fails them the user sees what a refused campaign always gave — one clear line,
+    exit 2 — and no process of the campaign is left (the CLI stops the screening's; it would also die
+    with its parent, PR_SET_PDEATHSIG)."""
+    path = campaign_file(tmp_path, name="refused_by_checks", seeds=2)
+    path.write_text(path.read_text().replace("[axes]\n", '[axes]\n"simulation.dt" = [0.05, 0.5]\n', 1))
+    r = run("campaign", path, "-o", tmp_path / "refused.h5", "--workers", "2", timeout=120)
+    assert r.returncode == 2 and "simulation.dt" in r.stderr and "too large" in r.stderr, r.stderr
+    assert "Traceback" not in r.stderr
+    left = subprocess.run(["pgrep", "-f", str(path)], capture_output=True, text=True)
+    assert left.stdout.strip() == "", left.stdout
+
+
 def test_report_writes_tables_and_figures(reference, tmp_path):
     _, one = reference
     r = run("report", one, "-o", tmp_path / "rep", "--target", "0.5")
