@@ -20,10 +20,11 @@ each access. Steps are every step a trial integrates (settling and ramp included
 2. **Where a 10,000-s trial's time goes**: cProfile of one ``execute_trial`` (the largest access asked).
 3. **Campaigns**: the ``boatland campaign`` CLI in a subprocess (start-up, imports, checks, the
    once-per-campaign preparation, workers, store, screening, statistics — end to end) on 1 and 2 local
-   workers, fresh store each time; wall, the CPU time of the whole process tree, the ratio of its
-   steps/s to 1× / 2× the kernel-only steps/s of part 1 (same run), and the kernel's share of the CPU
-   time (the steps' CPU time at part 1's kernel rate ÷ the tree's CPU time: what a loaded machine
-   distorts least).
+   workers, fresh store each time; wall, the CPU time of the whole process tree, and the ratio of its
+   steps/s to 1× / 2× the kernel-only steps/s measured right before and right after it (one call of
+   each case's kernel in this process; their mean — this VM's speed drifts by up to 2× over minutes,
+   so part 1's rate is not the campaign's); the kernel's share of the CPU time is the steps' CPU time at
+   that rate ÷ the tree's CPU time.
 
 The machine is shared: the load average is printed before and after every row, CPU time beside wall.
 """
@@ -120,7 +121,13 @@ def per_trial(path: Path, rounds: int):
     steps = sum(r[2] for r in runs)
     wall = [sum(r[3][i] for r in runs) for i in (0, 1)]
     cpu = [sum(r[4][i] for r in runs) for i in (0, 1)]
-    return steps, wall, cpu, (source, specs[-1], loaders, shared[specs[-1].case])
+    return steps, wall, cpu, (source, specs[-1], loaders, shared[specs[-1].case]), [(r[0], r[2]) for r in runs]
+
+
+def kernel_rate(kernels) -> float:
+    """Kernel-only steps/s (wall) of one call of each case's kernel: the machine's speed right now."""
+    steps = sum(n for _, n in kernels)
+    return steps / sum(timed(k)[0] for k, _ in kernels)
 
 
 def profile_trial(source, spec, loaders, shared):
@@ -188,16 +195,14 @@ def main() -> None:
         campaign(study_file(tmp, 30.0, 1), tmp / "warm.h5", 2)          # numba caches warm
         if args.before:
             campaign(study_file(tmp, 30.0, 1), tmp / "warm_before.h5", 2, args.before)
-        kernel_rate, kernel_cpu_rate, profile = {}, {}, None
+        profile, kernels = None, {}
         print("| access [s] | steps per trial (mean) | kernel steps/s (CPU) | trial steps/s (CPU) "
               "| trial / kernel (CPU) | trial cost per simulated s [ms] (CPU) | load |")
         print("|---|---|---|---|---|---|---|")
         for access in args.accesses:
             path = study_file(tmp, access, args.seeds)
             load0 = load_text()
-            steps, wall, cpu, last = per_trial(path, args.rounds)
-            kernel_rate[access] = steps / wall[0]
-            kernel_cpu_rate[access] = steps / cpu[0]
+            steps, wall, cpu, last, kernels[access] = per_trial(path, args.rounds)
             sim_s = steps * 0.05
             print(f"| {access:,.0f} | {steps / 9:,.0f} | {steps / wall[0]:,.0f} ({steps / cpu[0]:,.0f}) | "
                   f"{steps / wall[1]:,.0f} ({steps / cpu[1]:,.0f}) | {wall[0] / wall[1]:.2f} ({cpu[0] / cpu[1]:.2f}) | "
@@ -213,8 +218,8 @@ def main() -> None:
             for name, t in parts:
                 print(f"| {name} | {t:.3f} | {100 * t / total:.1f} % |")
         print("\n| access [s] | trials × steps | workers | code | wall [s] | CPU [s] | campaign steps/s | "
-              "÷ (workers × kernel steps/s) | kernel's share of the CPU time | load |")
-        print("|---|---|---|---|---|---|---|---|---|---|")
+              "kernel steps/s before → after | ÷ (workers × kernel steps/s) | kernel's share of the CPU time | load |")
+        print("|---|---|---|---|---|---|---|---|---|---|---|")
         codes = [("this", REPO)] + ([(f"before: {args.before.name}", args.before)] if args.before else [])
         from boatland.campaign.plan import load_campaign
 
@@ -226,13 +231,14 @@ def main() -> None:
             for workers in args.workers:
                 for label, code in codes:
                     load0 = load_text()
+                    before = kernel_rate(kernels[access])          # the machine's speed drifts: bracket
                     wall, cpu = campaign(path, tmp / f"c{access:g}_{workers}_{len(label)}.h5", workers, code)
-                    rate = steps / wall
+                    after = kernel_rate(kernels[access])
+                    rate, k_rate = steps / wall, 0.5 * (before + after)
                     print(f"| {access:,.0f} | {c.n_trials} × {steps / c.n_trials:,.0f} | {workers} | {label} | "
-                          f"{wall:.1f} | {cpu:.1f} | {rate:,.0f} | "
-                          f"{100 * rate / (workers * kernel_rate[access]):.0f} % | "
-                          f"{100 * steps / kernel_cpu_rate[access] / cpu:.0f} % | {load0} → {load_text()} |",
-                          flush=True)
+                          f"{wall:.1f} | {cpu:.1f} | {rate:,.0f} | {before:,.0f} → {after:,.0f} | "
+                          f"{100 * rate / (workers * k_rate):.0f} % | "
+                          f"{100 * steps / k_rate / cpu:.0f} % | {load0} → {load_text()} |", flush=True)
 
 
 if __name__ == "__main__":
