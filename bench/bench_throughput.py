@@ -2,7 +2,7 @@
 in one run, for 600, 1,800 and 10,000-s accesses on 1 and 2 workers — the last row of 2 workers is the
 seed-002 study size end to end (72 trials × 10,000 s, 9 sea states; SIMO: 45 min per sea state).
 
-Run: ``python bench/bench_throughput.py [--accesses 600 1800 10000] [--rounds 2] [--before CHECKOUT]``
+Run: ``python bench/bench_throughput.py [--accesses 600 1800 10000] [--rounds 2] [--repeat 1] [--before CHECKOUT]``
 (``--before``: every campaign row again with another checkout, e.g. ``git archive ba34c7f`` unpacked,
 right after it — before/after in the same run). Prints Markdown.
 
@@ -180,6 +180,9 @@ def main() -> None:
     ap.add_argument("--rounds", type=int, default=2, help="rounds of the per-trial timing (best per case)")
     ap.add_argument("--seeds", type=int, default=8, help="seeds per case of the campaigns (8: 72 trials)")
     ap.add_argument("--workers", type=int, nargs="*", default=[1, 2], help="campaign rows (none: per trial only)")
+    ap.add_argument("--repeat", type=int, default=1,
+                    help="campaign rows per code, interleaved with --before's (this VM's speed drifts: the spread "
+                         "of the ratio over repeats is the honest figure)")
     ap.add_argument("--before", type=Path, metavar="CHECKOUT",
                     help="also run each campaign with this checkout of boatland (e.g. an older commit), right after")
     args = ap.parse_args()
@@ -223,22 +226,33 @@ def main() -> None:
         codes = [("this", REPO)] + ([(f"before: {args.before.name}", args.before)] if args.before else [])
         from boatland.campaign.plan import load_campaign
 
+        ratios: dict = {}
         for access in args.accesses:
             path = study_file(tmp, access, args.seeds)
             c = load_campaign(path, load_scenario=load()[0])
             db = load()[1](c.base)
             steps = sum(c.scenario_for(s).n_steps(db) for s in c.trials())
             for workers in args.workers:
-                for label, code in codes:
+                for row, (label, code) in enumerate([lc for _ in range(args.repeat) for lc in codes]):
                     load0 = load_text()
                     before = kernel_rate(kernels[access])          # the machine's speed drifts: bracket
-                    wall, cpu = campaign(path, tmp / f"c{access:g}_{workers}_{len(label)}.h5", workers, code)
+                    wall, cpu = campaign(path, tmp / f"c{access:g}_{workers}_{row}.h5", workers, code)
                     after = kernel_rate(kernels[access])
                     rate, k_rate = steps / wall, 0.5 * (before + after)
+                    ratios.setdefault((access, workers, label), []).append((rate / (workers * k_rate), wall))
                     print(f"| {access:,.0f} | {c.n_trials} × {steps / c.n_trials:,.0f} | {workers} | {label} | "
                           f"{wall:.1f} | {cpu:.1f} | {rate:,.0f} | {before:,.0f} → {after:,.0f} | "
                           f"{100 * rate / (workers * k_rate):.0f} % | "
                           f"{100 * steps / k_rate / cpu:.0f} % | {load0} → {load_text()} |", flush=True)
+        if args.repeat > 1:
+            print("\n| access [s] | workers | code | rows | ÷ (workers × kernel steps/s): median (min – max) "
+                  "| wall [s]: median (min – max) |")
+            print("|---|---|---|---|---|---|")
+            for (access, workers, label), v in ratios.items():
+                r, w = np.array(v).T
+                print(f"| {access:,.0f} | {workers} | {label} | {len(r)} | {100 * np.median(r):.0f} % "
+                      f"({100 * r.min():.0f} – {100 * r.max():.0f} %) | {np.median(w):.1f} ({w.min():.1f} – "
+                      f"{w.max():.1f}) |")
 
 
 if __name__ == "__main__":
