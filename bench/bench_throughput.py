@@ -22,9 +22,11 @@ each access. Steps are every step a trial integrates (settling and ramp included
    once-per-campaign preparation, workers, store, screening, statistics — end to end) on 1 and 2 local
    workers, fresh store each time; wall, the CPU time of the whole process tree, and the ratio of its
    steps/s to 1× / 2× the kernel-only steps/s measured right before and right after it (one call of
-   each case's kernel in this process; their mean — this VM's speed drifts by up to 2× over minutes,
-   so part 1's rate is not the campaign's); the kernel's share of the CPU time is the steps' CPU time at
-   that rate ÷ the tree's CPU time.
+   three cases' kernels — Tp 5 s head, 7 s 135°, 9 s beam — their mean: this VM's speed drifts by up to
+   2× over minutes, so part 1's rate is not the campaign's): with one core busy (this process alone),
+   and per core with both busy (the same calls in this process and a fork at once — what a core gives
+   a worker while the other works too). ``--repeat N``: N rows per code, interleaved; the median and
+   spread of the ratios.
 
 The machine is shared: the load average is printed before and after every row, CPU time beside wall.
 """
@@ -125,9 +127,26 @@ def per_trial(path: Path, rounds: int):
 
 
 def kernel_rate(kernels) -> float:
-    """Kernel-only steps/s (wall) of one call of each case's kernel: the machine's speed right now."""
+    """Kernel-only steps/s (wall) of one call of each kernel: the machine's speed right now, one core busy."""
     steps = sum(n for _, n in kernels)
     return steps / sum(timed(k)[0] for k, _ in kernels)
+
+
+def kernel_pair_rate(kernels) -> float:
+    """Steps/s per process of the same calls in two processes at once (this one and a fork): what each
+    core gives when both are busy, as in a campaign on two workers."""
+    r, w = os.pipe()
+    pid = os.fork()
+    if pid == 0:                                            # the child: its rate to the pipe, then out
+        try:
+            os.write(w, np.float64(kernel_rate(kernels)).tobytes())
+        finally:
+            os._exit(0)
+    own = kernel_rate(kernels)
+    os.waitpid(pid, 0)
+    other = float(np.frombuffer(os.read(r, 8))[0])
+    os.close(r), os.close(w)
+    return 0.5 * (own + other)
 
 
 def profile_trial(source, spec, loaders, shared):
@@ -205,7 +224,8 @@ def main() -> None:
         for access in args.accesses:
             path = study_file(tmp, access, args.seeds)
             load0 = load_text()
-            steps, wall, cpu, last, kernels[access] = per_trial(path, args.rounds)
+            steps, wall, cpu, last, runs = per_trial(path, args.rounds)
+            kernels[access] = runs[::4]                          # Tp 5 s head, Tp 7 s 135°, Tp 9 s beam
             sim_s = steps * 0.05
             print(f"| {access:,.0f} | {steps / 9:,.0f} | {steps / wall[0]:,.0f} ({steps / cpu[0]:,.0f}) | "
                   f"{steps / wall[1]:,.0f} ({steps / cpu[1]:,.0f}) | {wall[0] / wall[1]:.2f} ({cpu[0] / cpu[1]:.2f}) | "
@@ -221,8 +241,9 @@ def main() -> None:
             for name, t in parts:
                 print(f"| {name} | {t:.3f} | {100 * t / total:.1f} % |")
         print("\n| access [s] | trials × steps | workers | code | wall [s] | CPU [s] | campaign steps/s | "
-              "kernel steps/s before → after | ÷ (workers × kernel steps/s) | kernel's share of the CPU time | load |")
-        print("|---|---|---|---|---|---|---|---|---|---|---|")
+              "kernel steps/s, one core busy: before → after | per core, both busy: before → after | "
+              "÷ (workers × kernel, one busy) | ÷ (workers × kernel, both busy) | load |")
+        print("|---|---|---|---|---|---|---|---|---|---|---|---|")
         codes = [("this", REPO)] + ([(f"before: {args.before.name}", args.before)] if args.before else [])
         from boatland.campaign.plan import load_campaign
 
@@ -235,24 +256,30 @@ def main() -> None:
             for workers in args.workers:
                 for row, (label, code) in enumerate([lc for _ in range(args.repeat) for lc in codes]):
                     load0 = load_text()
-                    before = kernel_rate(kernels[access])          # the machine's speed drifts: bracket
+                    ks = kernels[access]                            # the machine's speed drifts: bracket
+                    before, pair0 = kernel_rate(ks), kernel_pair_rate(ks)
                     wall, cpu = campaign(path, tmp / f"c{access:g}_{workers}_{row}.h5", workers, code)
-                    after = kernel_rate(kernels[access])
-                    rate, k_rate = steps / wall, 0.5 * (before + after)
-                    ratios.setdefault((access, workers, label), []).append((rate / (workers * k_rate), wall))
+                    after, pair1 = kernel_rate(ks), kernel_pair_rate(ks)
+                    rate, k_one = steps / wall, 0.5 * (before + after)
+                    k_both = 0.5 * (pair0 + pair1) if workers > 1 else k_one
+                    ratios.setdefault((access, workers, label), []).append(
+                        (rate / (workers * k_one), rate / (workers * k_both), wall))
                     print(f"| {access:,.0f} | {c.n_trials} × {steps / c.n_trials:,.0f} | {workers} | {label} | "
                           f"{wall:.1f} | {cpu:.1f} | {rate:,.0f} | {before:,.0f} → {after:,.0f} | "
-                          f"{100 * rate / (workers * k_rate):.0f} % | "
-                          f"{100 * steps / k_rate / cpu:.0f} % | {load0} → {load_text()} |", flush=True)
+                          f"{pair0:,.0f} → {pair1:,.0f} | {100 * rate / (workers * k_one):.0f} % | "
+                          f"{100 * rate / (workers * k_both):.0f} % | {load0} → {load_text()} |", flush=True)
         if args.repeat > 1:
-            print("\n| access [s] | workers | code | rows | ÷ (workers × kernel steps/s): median (min – max) "
-                  "| wall [s]: median (min – max) |")
-            print("|---|---|---|---|---|---|")
+            print("\n| access [s] | workers | code | rows | ÷ (workers × kernel, one busy): median (min – max) "
+                  "| ÷ (workers × kernel, both busy): median (min – max) | wall [s]: median (min – max) |")
+            print("|---|---|---|---|---|---|---|")
+
+            def spread(x, f="{:.0f}", scale=100.0):
+                return f"{f.format(scale * np.median(x))} ({f.format(scale * x.min())} – {f.format(scale * x.max())})"
+
             for (access, workers, label), v in ratios.items():
-                r, w = np.array(v).T
-                print(f"| {access:,.0f} | {workers} | {label} | {len(r)} | {100 * np.median(r):.0f} % "
-                      f"({100 * r.min():.0f} – {100 * r.max():.0f} %) | {np.median(w):.1f} ({w.min():.1f} – "
-                      f"{w.max():.1f}) |")
+                one, both, w = np.array(v).T
+                print(f"| {access:,.0f} | {workers} | {label} | {len(w)} | {spread(one)} % | {spread(both)} % | "
+                      f"{spread(w, '{:.1f}', 1.0)} |")
 
 
 if __name__ == "__main__":
