@@ -359,30 +359,3 @@ def harmonic_sum_nufft(omega, c, t0: float, h: float, n: int, M_sp: int = M_SP,
         G = sfft.ifft(rows, axis=1, workers=1, overwrite_x=True)   # G(k2 + M2 k1) = G[k2, k1]
         _extract(G, scale, n_c, s[ja], ja, s[jb] if jb >= 0 else 0.0, jb, out)
     return out
-    ct = c[live] * _centre_phasor(omega, float(t0), n_c, float(h))[None, :] / s[live, None]
-    # points +x_i and −x_i in grid units u = x M/2π (no reduction of −x: an error of 2π's last bit
-    # would become a phase error k·δx); Gaussian exp(−(x − 2πj/M)²/4τ) = exp(−α (u − j)²)
-    # (in increasing u: the grid is written in order, cache-friendly on long grids)
-    x = _reduced(omega, float(h))
-    if not np.all(np.isfinite(x)):                      # NaN or infinite ω: NaN, as the direct sum
-        out[:, live] = np.nan
-        return out
-    u = np.concatenate([x, -x]) * (M / _TWO_PI_HI)
-    order = np.argsort(u, kind="stable")
-    u = u[order]
-    alpha = math.pi * (M - 0.5 * K) / (M * M_sp)
-    # deconvolution 2π/φ̂(k) = √(π/τ) e^{k²τ} for k = −n_c .. n − 1 − n_c (at index k mod M of the FFT)
-    k = np.arange(-n_c, n - n_c, dtype=float)
-    scale = math.sqrt(math.pi / tau) * np.exp(k * k * tau)
-    g = np.empty(M, dtype=complex)
-    for pair in range(0, live.size, 2):
-        ja = live[pair]
-        jb = live[pair + 1] if pair + 1 < live.size else -1
-        a = ct[pair]
-        b = ct[pair + 1] if jb >= 0 else np.zeros_like(a)
-        q = np.concatenate([0.5 * (a + 1j * b), 0.5 * (np.conj(a) + 1j * np.conj(b))])[order]
-        g[:] = 0.0
-        _spread(u, q, alpha, M_sp, g)
-        G = sfft.ifft(g, workers=1, overwrite_x=False)
-        _extract(G, scale, n_c, s[ja], ja, s[jb] if jb >= 0 else 0.0, jb, out)
-    return out
