@@ -408,7 +408,9 @@ def start_screening(campaign: Campaign, loaders, executor: str = "local",
 
 
 def _screening_job(campaign: Campaign, loaders) -> tuple[np.ndarray, list[str]]:
-    with single_threaded():
+    # silent: the campaign's own checks say what is wrong with a case (the screening may run before them)
+    with single_threaded(), warnings.catch_warnings():
+        warnings.simplefilter("ignore")
         return _screening(campaign, loaders)
 
 
