@@ -22,7 +22,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.integrate import trapezoid
 
 from boatland.errors import BoatlandInputError
 from boatland.model.hydrodb import HydroDB
@@ -195,8 +194,8 @@ def _variance_share_above(waves, omega_max: float) -> float:
     wp = min(p.omega_p for p in waves.parts)
     w = np.linspace(1e-3 * wp, max(40.0 * wp, 2 * omega_max), 20001)
     S = waves.spectrum(w)
-    total = trapezoid(S, w)
-    return float(trapezoid(np.where(w > omega_max, S, 0.0), w) / total) if total > 0 else 0.0
+    total = np.trapezoid(S, w)       # numpy's, the same sum as scipy's (scipy.integrate: 0.23 s to import)
+    return float(np.trapezoid(np.where(w > omega_max, S, 0.0), w) / total) if total > 0 else 0.0
 
 
 def check_against(scenario, db: HydroDB) -> ScenarioCheck:

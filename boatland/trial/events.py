@@ -30,7 +30,7 @@ import numpy as np
 from boatland.contact.fender import OFF, OPEN, SLIP, STICK
 
 __all__ = ["Event", "SlipEpisode", "SLID_OFF", "extract_events", "slip_episodes", "landing_offset", "track_landing",
-           "worst_landing_offset", "first_exceedance"]
+           "worst_landing_offset", "first_exceedance", "slip_start_rows", "first_entry", "largest_single_slide"]
 
 SLID_OFF = "slid off the landing"
 KIND = {(OPEN, STICK): "contact made", (OPEN, SLIP): "contact made", (STICK, OPEN): "contact lost",
@@ -101,25 +101,85 @@ def slip_episodes(t, mode, tpos) -> list[SlipEpisode]:
     episodes = []
     mode = np.asarray(mode)
     tpos = np.ascontiguousarray(tpos, dtype=float)
-    n = mode.shape[0]
     ended_by = {STICK: "re-stick", OPEN: "contact lost", OFF: "slid off the landing"}
     for c in range(mode.shape[1]):
         m = mode[:, c]
-        sliding = m == SLIP
-        starts = np.flatnonzero(sliding[1:] & (m[:-1] == STICK)) + 1
+        starts, k1, closed = _slip_runs(m)
         if not starts.size:
             continue
-        ends = np.flatnonzero(sliding[:-1] & ~sliding[1:]) + 1        # first row after each slip run
-        j_end = np.searchsorted(ends, starts)
-        closed = j_end < ends.size
-        k1 = np.full(starts.size, n - 1)
-        k1[closed] = ends[j_end[closed]]
         dist, dv, dh = _largest_slides(tpos, c, starts, k1)
         why = [ended_by[int(x)] if ok else "end of run" for x, ok in zip(m[k1].tolist(), closed.tolist())]
         episodes += [SlipEpisode(c, float(ts), float(te), di, v, h, e) for ts, te, di, v, h, e in
                      zip(t[starts].tolist(), t[k1].tolist(), dist.tolist(), dv.tolist(), dh.tolist(), why)]
     episodes.sort(key=lambda e: (e.t_start, e.contact))
     return episodes
+
+
+def _slip_runs(m):
+    """The slip episodes of one contact's mode column ``m`` (n,): their first rows (stick → slip), the rows
+    that end them (the first row after the slip run, or the last row while still sliding) and whether
+    they ended before the record did."""
+    sliding = m == SLIP
+    starts = np.flatnonzero(sliding[1:] & (m[:-1] == STICK)) + 1
+    ends = np.flatnonzero(sliding[:-1] & ~sliding[1:]) + 1        # first row after each slip run
+    j_end = np.searchsorted(ends, starts)
+    closed = j_end < ends.size
+    k1 = np.full(starts.size, m.shape[0] - 1)
+    k1[closed] = ends[j_end[closed]]
+    return starts, k1, closed
+
+
+def largest_single_slide(mode, tpos, k_start: int = 0) -> float:
+    """The largest :attr:`SlipEpisode.distance` of the slip episodes that start at or after row ``k_start``
+    (0.0 without any), from the records without building the episodes — as ``max`` over
+    :func:`slip_episodes` in their order: NaN if the first of them is NaN, else NaN-free."""
+    mode = np.asarray(mode)
+    tpos = np.ascontiguousarray(tpos, dtype=float)
+    rows, contacts, dists = [], [], []
+    for c in range(mode.shape[1]):
+        starts, k1, _ = _slip_runs(mode[:, c])
+        keep = starts >= k_start
+        if keep.any():
+            rows.append(starts[keep])
+            contacts.append(np.full(int(keep.sum()), c))
+            dists.append(_largest_slides(tpos, c, starts[keep], k1[keep])[0])
+    if not rows:
+        return 0.0
+    d = np.concatenate(dists)[np.lexsort((np.concatenate(contacts), np.concatenate(rows)))]
+    return float(d[0]) if np.isnan(d[0]) else float(np.nanmax(d))
+
+
+@numba.njit(cache=True)
+def slip_start_rows(mode):  # pragma: no cover - compiled
+    """The rows of ``mode`` (n, Nc) at which one or more contacts go from stick to slip (the steps of the
+    stick → slip events, in order) and how many contacts do: ``(rows, counts)``."""
+    n, nc = mode.shape
+    rows = np.empty(n, dtype=np.int64)
+    counts = np.empty(n, dtype=np.int64)
+    m = 0
+    for k in range(1, n):
+        count = 0
+        for c in range(nc):
+            if mode[k, c] == SLIP and mode[k - 1, c] == STICK:
+                count += 1
+        if count:
+            rows[m] = k
+            counts[m] = count
+            m += 1
+    return rows[:m].copy(), counts[:m].copy()
+
+
+@numba.njit(cache=True)
+def first_entry(mode, target, k_start):  # pragma: no cover - compiled
+    """The first row k ≥ max(``k_start``, 1) at which a contact enters mode ``target`` (``mode[k, c] ==
+    target != mode[k − 1, c]``: the step of the first such event, e.g. contact lost for OPEN, slid off for
+    OFF); −1 if none."""
+    n, nc = mode.shape
+    for k in range(max(k_start, 1), n):
+        for c in range(nc):
+            if mode[k, c] == target and mode[k - 1, c] != target:
+                return k
+    return -1
 
 
 @numba.njit(cache=True)

@@ -11,8 +11,10 @@ import numpy as np
 from boatland.atomic import atomic_path
 from boatland.conventions import DOF_NAMES, DOF_UNITS
 from boatland.model.scenario_parts import Incidents
-from boatland.trial.events import (SLID_OFF, Event, SlipEpisode, all_touching_fraction, column_abs_max,
-                                   first_exceedance, landing_offset, worst_landing_offset)
+from boatland.contact.fender import OFF, OPEN
+from boatland.trial.events import (SLID_OFF, Event, SlipEpisode, all_touching_fraction, column_abs_max, extract_events,
+                                   first_entry, first_exceedance, landing_offset, largest_single_slide,
+                                   slip_episodes, slip_start_rows, worst_landing_offset)
 
 __all__ = ["Result", "TrialSeries", "SERIES"]
 
@@ -70,8 +72,6 @@ class Result(TrialSeries):
         [m]: the rubber's anchor (compliant fender) or the contact point (rigid stick).
     work : (n, Nc) or None
         Friction work of that step [J] (never positive).
-    events, episodes : list
-        :class:`~boatland.trial.events.Event` and :class:`~boatland.trial.events.SlipEpisode`.
     status, message : int, str
         0 = completed; 3 = the fender slid off the landing (an outcome: the trial ends there);
         otherwise why the integration stopped (NaN, runaway) — the arrays then end there.
@@ -84,8 +84,6 @@ class Result(TrialSeries):
 
     slide: np.ndarray | None = None
     work: np.ndarray | None = None
-    events: list[Event] = field(default_factory=list)
-    episodes: list[SlipEpisode] = field(default_factory=list)
     status: int = 0
     message: str = "completed"
     provenance: dict = field(default_factory=dict)
@@ -111,6 +109,32 @@ class Result(TrialSeries):
 
     def _settle_row(self) -> int:
         return int(np.searchsorted(self.t, self.settled_at - 1e-9))
+
+    @cached_property
+    def events(self) -> list[Event]:
+        """Every state change of every contact (:class:`~boatland.trial.events.Event`, by step then contact;
+        :func:`~boatland.trial.events.extract_events`), built from the mode records when first asked for:
+        :meth:`summary` and the verdict read the records themselves (a campaign's trial has thousands)."""
+        return extract_events(self.t, self.mode, self.needed, self.available)
+
+    @cached_property
+    def episodes(self) -> list[SlipEpisode]:
+        """The slip episodes (:class:`~boatland.trial.events.SlipEpisode`, :func:`~boatland.trial.events.slip_episodes`),
+        built when first asked for."""
+        return slip_episodes(self.t, self.mode, self.tpos)
+
+    @cached_property
+    def slip_rows(self) -> tuple[np.ndarray, np.ndarray]:
+        """The steps of the stick → slip events, whole run, and how many contacts slip at each
+        (:func:`~boatland.trial.events.slip_start_rows`): ``(rows, counts)``, read only."""
+        rows, counts = slip_start_rows(self.mode)
+        rows.flags.writeable = counts.flags.writeable = False
+        return rows, counts
+
+    def _first_entry(self, mode: int, k_start: int) -> float | None:
+        """Time of the first step at or after row ``k_start`` at which a contact enters ``mode`` (None: never)."""
+        k = first_entry(self.mode, mode, k_start)
+        return None if k < 0 else float(self.t[k])
 
     @cached_property
     def peak_motions(self) -> np.ndarray:
@@ -148,11 +172,11 @@ class Result(TrialSeries):
             out[f"slip > {limit:g} m"] = first_exceedance(self.t, worst, limit) if worst is not None else None
         for limit in roll_limits:
             out[f"roll > {limit:g}°"] = first_exceedance(self.t, self.x[:, 3], np.radians(limit))
-        if self.mode.shape[1]:
-            lost = [e.t for e in self.events if e.kind in ("contact lost", SLID_OFF) and e.t >= self.settled_at - 1e-9]
+        if self.mode.shape[1]:   # contact lost: a contact opens; slid off: it goes off the landing
+            k0 = self._settle_row()
+            lost = [t for t in (self._first_entry(OPEN, k0), self._first_entry(OFF, k0)) if t is not None]
             out["contact loss"] = min(lost) if lost else None
-            off = [e.t for e in self.events if e.kind == SLID_OFF]
-            out[SLID_OFF] = min(off) if off else None
+            out[SLID_OFF] = self._first_entry(OFF, 0)
         return out
 
     def slip_starts(self) -> list:
@@ -197,7 +221,9 @@ class Result(TrialSeries):
         ``slip_events`` counts the fender's slip starts (contacts slipping at the same step once,
         :meth:`slip_starts`); ``contact_slip_events`` each contact's. The normal forces are those after
         the settling (:attr:`settled_at`; the whole run if it never touched after it)."""
-        slips = self.slip_events()
+        k0 = self._settle_row()
+        rows, counts = self.slip_rows
+        after = rows >= k0                             # the stick → slip events after the settling
         worst = self._worst_offset()
         touching = self.mode > 0
         landed = touching[self._settle_row():]         # forces after the settling: not the first touch
@@ -207,12 +233,11 @@ class Result(TrialSeries):
         s = {
             "status": self.message,
             "duration": float(self.t[-1]),
-            "slip_events": len({e.step for e in slips}),   # = len(self.slip_starts()), without building them
-            "contact_slip_events": len(slips),
-            "time_to_first_slip": slips[0].t if slips else None,
+            "slip_events": int(np.count_nonzero(after)),   # = len(self.slip_starts()): each step once
+            "contact_slip_events": int(counts[after].sum()),
+            "time_to_first_slip": float(self.t[rows[after][0]]) if after.any() else None,
             "max_slip_distance": float(worst.max()) if worst is not None and worst.size else 0.0,
-            "max_single_slide": max((e.distance for e in self.episodes if e.t_start >= self.settled_at - 1e-9),
-                                    default=0.0),
+            "max_single_slide": largest_single_slide(self.mode, self.tpos, k0),
             "max_normal_force": None if not touching.any() else float(np.nanmax(fn)),
             "min_normal_force_in_contact": None if not touching.any() else float(np.nanmin(fn)),
             "contact_fraction": float(all_touching_fraction(self.mode)) if self.mode.shape[1] else 0.0,

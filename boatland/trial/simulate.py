@@ -29,7 +29,7 @@ from boatland.model.radiation import RadiationMemory, default_dt, radiation_memo
 from boatland.model.scenario import Scenario, ScenarioWarning
 from boatland.model.hydrodb import HydroDB
 from boatland.reproducible import pinned
-from boatland.trial.events import extract_events, slip_episodes
+from boatland.trial.events import extract_events
 from boatland.trial.inputs import trial_inputs
 from boatland.trial.result import SERIES, Result
 from boatland.trial.sink import StepBlock, TrialInfo, TrialSink
@@ -261,13 +261,10 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
         out = _run_watched(arrays, dt, n, kwargs, progress, sinks, info, F, thrust, progress_every)
     t = out["t"]
     k = len(t)
-    events = extract_events(t, out["mode"], out["needed"], out["available"])
-    episodes = slip_episodes(t, out["mode"], out["tpos"])
     provenance["wall_time"] = time.perf_counter() - wall0
     result = Result(t=t, x=out["x"], v=out["v"], F_exc=F[0:2 * k:2], thrust=thrust[0:2 * k:2],
                     mode=out["mode"], fn=out["fn"], ft=out["ft"], needed=out["needed"],
                     available=out["available"], tpos=out["tpos"], slide=out["slide"], work=out["work"],
-                    events=events, episodes=episodes,
                     status=out["status"], message=out["message"], provenance=provenance,
                     incidents=scenario.incidents)
     for sink in sinks:

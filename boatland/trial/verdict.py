@@ -229,8 +229,9 @@ def verdict(result, summary: dict | None = None) -> Verdict:
     if crossed:
         first = crossed[0]
         t_cross = inc[first]
-        starts = [e.t for e in result.events if e.kind == "stick→slip" and after <= e.t <= t_cross + 1e-9]
-        t = starts[-1] if starts else t_cross
+        ts = result.t[result.slip_rows[0]]           # the stick → slip events' times
+        starts = ts[(ts >= after) & (ts <= t_cross + 1e-9)]
+        t = float(starts[-1]) if starts.size else t_cross
         head = f"SLIPPED at {fmt_time(t)}, slid {fmt_length(slid)} ({first} at {fmt_time(t_cross)})" + also({first})
         return Verdict("slipped", head, inputs, t, inc)
     if inc.get("contact loss") is not None:

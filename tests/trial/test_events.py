@@ -141,3 +141,41 @@ def test_column_abs_max_and_touching_fraction_are_the_numpy_reductions():
     for nc in (1, 2, 3):
         mode = rng.integers(0, 4, size=(999, nc))
         assert all_touching_fraction(mode) == (mode > 0).all(axis=1).mean()
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_the_summary_read_from_the_records_equals_the_one_from_the_events_bit_for_bit(seed):
+    """What the summary and the verdict read from the mode records without building events or episodes
+    (issue 16: a campaign's trial has thousands) is what the event and episode lists give, bit for bit:
+    the stick → slip steps and their contact counts, the first entry into open / off the landing after
+    a row, and the largest single slide after a row — NaN where the first such episode's is NaN, as
+    Python's ``max`` over the episodes in order."""
+    from boatland.contact.fender import OFF, OPEN
+    from boatland.trial.events import SLID_OFF, first_entry, largest_single_slide, slip_start_rows
+
+    rng = np.random.default_rng(100 + seed)
+    n, nc = 3000, 1 + seed % 3
+    runs = rng.integers(1, 40, size=n)
+    base = np.repeat(rng.choice(4, size=n, p=[0.1, 0.45, 0.4, 0.05]), runs)[:n]
+    mode = np.column_stack([np.roll(base, 23 * c) for c in range(nc)]).astype(np.int64)
+    t = np.arange(n) * 0.05
+    tpos = np.round(rng.normal(size=(n, nc, 2)), 2)
+    if seed % 2:                                                       # NaN positions inside some episodes
+        tpos[rng.integers(0, n, 20), rng.integers(0, nc, 20), rng.integers(0, 2, 20)] = np.nan
+    events = extract_events(t, mode, np.zeros((n, nc)), np.zeros((n, nc)))
+    episodes = slip_episodes(t, mode, tpos)
+    rows, counts = slip_start_rows(mode)
+    slips = [e for e in events if e.kind == "stick→slip"]
+    assert rows.tolist() == sorted({e.step for e in slips})
+    assert counts.tolist() == [sum(e.step == k for e in slips) for k in rows.tolist()]
+    for k0 in (0, 1, 517, n - 1, n):
+        for target, kinds in ((OPEN, ("contact lost",)), (OFF, (SLID_OFF,))):
+            steps = [e.step for e in events if e.kind in kinds and e.step >= k0]
+            assert first_entry(mode, target, k0) == (min(steps) if steps else -1)
+        expected = max((e.distance for e in episodes if e.t_start >= t[min(k0, n - 1)] - 1e-9 and k0 < n),
+                       default=0.0)
+        got = largest_single_slide(mode, tpos, k0)
+        assert np.float64(got).tobytes() == np.float64(expected).tobytes()
+    first = episodes[0]                                               # its slide NaN: the whole max is NaN
+    tpos[int(round(first.t_start / 0.05)), first.contact, 0] = np.nan
+    assert np.isnan(slip_episodes(t, mode, tpos)[0].distance) and np.isnan(largest_single_slide(mode, tpos, 0))
