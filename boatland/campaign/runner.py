@@ -20,12 +20,14 @@ every probability; :func:`failures` lists them per case. Before any trial, every
 the checks ``boatland run`` makes (:func:`check_cases`).
 
 Work done once per campaign, not per trial or worker: :func:`check_cases` makes each radiation memory
-(IRFs and state-space fit) once; :func:`prepare_cases` compiles the kernel arrays of each case from it
-and makes the ω tables of the pile's scattered wave its trials interpolate, once per case, in the
-campaign's process; every trial is shipped its case's :class:`CaseData` (local workers: with the task;
-Dask: one scattered copy per case), so no worker makes either again. They are the values a worker
-would have made (the same functions, pinned to one BLAS thread): the store is the same bit for bit.
-With several workers the frequency-domain screening runs in a process of its own beside the trials.
+(IRFs and state-space fit) once; :func:`prepare_cases` compiles the kernel arrays of each case from it;
+the ω tables of the pile's scattered wave the trials interpolate are made once for the whole campaign,
+every wave direction of a layout in one pass (:func:`boatland.model.pile_diffraction.make_tables`);
+every trial is shipped its case's :class:`CaseData` (local workers: with the task; Dask: one scattered
+copy per case), so no worker makes either again. They are the values a worker would have made (the
+same functions, pinned to one BLAS thread): the store is the same bit for bit. With several workers
+the tables and then the frequency-domain screening are made in a process of its own
+(:class:`BackgroundWork`), which starts before the checks, on the core they leave idle.
 
 Local workers die with the campaign: each sets ``PR_SET_PDEATHSIG`` (Linux) and watches its parent's
 pid, so neither SIGKILL nor SIGTERM of the campaign leaves workers running; a campaign stopped by an
@@ -60,7 +62,7 @@ from boatland.reproducible import single_threaded
 from boatland.trial.simulate import exposure_start
 
 __all__ = ["run_campaign", "execute_trial", "incident_names", "case_statistics", "check_cases", "prepare_cases",
-           "CaseData", "completed", "failures"]
+           "CaseData", "completed", "failures", "start_background", "BackgroundWork"]
 
 _CACHE: dict = {}   # per worker process: campaign, databases and radiation memories
 _CHECKED: dict = {}  # per campaign process: what check_cases made, by (campaign digest, database loader)
@@ -256,17 +258,27 @@ def prepare_cases(campaign: Campaign, load_database, cases=None) -> dict[int, Ca
 class _CasePreparation:
     """case → :class:`CaseData` (or None), made the first time it is asked for — when the first trial of the
     case is handed to the executor, so that the workers start on the first case while the next ones are
-    prepared. Kernel arrays are compiled once per radiation memory and time step."""
+    prepared. Kernel arrays are compiled once per radiation memory and time step; the pile's tables of
+    every case are made together when the first case is (:func:`_campaign_tables`), or taken from
+    ``background`` (:class:`BackgroundWork`) which made them beside the checks."""
 
-    def __init__(self, campaign: Campaign, load_database):
+    def __init__(self, campaign: Campaign, load_database, background: "BackgroundWork | None" = None):
         self.campaign, self.checked = campaign, _checked(campaign, load_database)
+        self.load_database, self.background = load_database, background
         self.cases: dict = {}
         self.arrays: dict = {}
+        self.tables_in = False
 
     def get(self, case: int) -> CaseData | None:
         if case not in self.cases:
             with warnings.catch_warnings(), single_threaded():
                 warnings.simplefilter("ignore")
+                if not self.tables_in:
+                    from boatland.model.pile_diffraction import remember_tables
+
+                    self.tables_in = True
+                    remember_tables(self.background.tables() if self.background is not None else
+                                    _campaign_tables(self.campaign, self.load_database, self.checked["dbs"]))
                 try:
                     self.cases[case] = self._prepare(case)
                 except Exception:  # noqa: BLE001 — its trials meet it again and record it
@@ -284,6 +296,39 @@ class _CasePreparation:
         if akey not in self.arrays:
             self.arrays[akey] = motion_arrays(sc, db, self.checked["memories"][mkey])
         return CaseData(arrays=self.arrays[akey], tables=tuple(pile_tables(sc, db)))
+
+
+def _campaign_tables(campaign: Campaign, load_database, dbs: dict | None = None) -> list:
+    """The ω tables of the pile's scattered wave of every case (:func:`boatland.trial.simulate.pile_tables`),
+    the directions of each database and layout made together
+    (:func:`boatland.model.pile_diffraction.make_tables`; three directions of the ctv24: 1.4 s instead of
+    2.6 s). None when there are more than a process keeps (then each case makes its own, as before), and
+    none for a case whose tables fail: its own preparation meets the error again."""
+    from boatland.model.pile_diffraction import TABLE_CACHE_SIZE, make_tables
+    from boatland.trial.simulate import pile_table_request
+
+    requests: dict = {}
+    dbs = {} if dbs is None else dict(dbs)      # databases by key, loaded where missing
+    for case in campaign.cases:
+        try:
+            sc = campaign.scenario_for(_first_trial(campaign, case.index))
+            dbkey = str(sc.vessel.database_path or sc.vessel.database)
+            if dbkey not in dbs:
+                dbs[dbkey] = load_database(sc)
+            request = pile_table_request(sc, dbs[dbkey])
+        except Exception:  # noqa: BLE001
+            continue
+        if request is not None:
+            requests.setdefault(dbkey, []).append(request)
+    if sum(np.unique(r.theta).size for rs in requests.values() for r in rs) > TABLE_CACHE_SIZE:
+        return []
+    tables = []
+    for dbkey, rs in requests.items():
+        try:
+            tables += make_tables(dbs[dbkey], rs)
+        except Exception:  # noqa: BLE001 — e.g. the hull inside the pile: the cases say so themselves
+            continue
+    return tables
 
 
 def completed(table: np.ndarray) -> np.ndarray:
@@ -326,7 +371,7 @@ def _summary_row(result, t0: float, duration: float, names: list[str]) -> dict:
 
 def run_campaign(campaign: Campaign, store_path: str | Path, *, loaders, executor: str = "local",
                  workers: int | None = None, scheduler: str | None = None, progress=None,
-                 connect_timeout: float = 10.0, screening: "BackgroundScreening | None" = None) -> CampaignStore:
+                 connect_timeout: float = 10.0, background: "BackgroundWork | None" = None) -> CampaignStore:
     """Run every trial of ``campaign`` not yet in the store at ``store_path``.
 
     Parameters
@@ -344,10 +389,10 @@ def run_campaign(campaign: Campaign, store_path: str | Path, *, loaders, executo
         Address of a Dask scheduler (``tcp://host:port``) for ``executor="dask"``.
     progress : callable, optional
         ``progress(done, total)`` after each trial.
-    screening : BackgroundScreening, optional
-        The frequency-domain screening already started by :func:`start_screening` for this campaign (the
-        CLI starts it before its checks, on the core they leave idle); closed here. Default: started here
-        (in a process of its own when the trials run in other processes).
+    background : BackgroundWork, optional
+        The pile's tables and the frequency-domain screening already started by :func:`start_background`
+        for this campaign (the CLI starts it before its checks, on the core they leave idle); closed here.
+        Default: started here (in a process of its own when the trials run in other processes).
 
     Returns
     -------
@@ -373,9 +418,9 @@ def run_campaign(campaign: Campaign, store_path: str | Path, *, loaders, executo
                 progress(total - len(todo), total)
             keep = str(store.series_dir) if campaign.keep_series else None
             source = str(Path(campaign.source).resolve())
-            if screening is None and todo:
-                screening = start_screening(campaign, loaders, executor, workers)
-            shared = _CasePreparation(campaign, loaders[1])   # each case's data when its first trial is sent
+            if background is None and todo:
+                background = start_background(campaign, loaders, executor, workers)
+            shared = _CasePreparation(campaign, loaders[1], background)   # a case's data when its first trial is sent
             if todo and executor == "local":        # forked workers inherit the campaign and databases
                 _context(source, loaders)["db"].update(shared.checked["dbs"])
             rows = _execute(todo, (source, loaders, keep), executor, workers, scheduler, connect_timeout, shared)
@@ -386,25 +431,26 @@ def run_campaign(campaign: Campaign, store_path: str | Path, *, loaders, executo
                         progress(len(store.rows), total)
             finally:
                 rows.close()               # an error above cancels the queued trials and stops the workers
-            p_fd, why = screening.result() if screening is not None else _screening_job(campaign, loaders)
+            p_fd, why = background.screening() if background is not None else _screening_job(campaign, loaders)
             store.finish(case_statistics(campaign, store.table(), names, screening=p_fd, screening_notes=why))
         finally:
             store.close()
     finally:
-        if screening is not None:          # stopped now if the campaign stopped early
-            screening.close()
+        if background is not None:          # stopped now if the campaign stopped early
+            background.close()
     return store
 
 
-def start_screening(campaign: Campaign, loaders, executor: str = "local",
-                    workers: int | None = None) -> "BackgroundScreening | None":
-    """The campaign's frequency-domain screening (:func:`_screening`) started in a process of its own,
-    to run beside the trials — or None when the trials run in this process (one local worker: the
-    screening then runs after them, here). Pass it to :func:`run_campaign`; :meth:`BackgroundScreening.close`
-    it if the campaign does not run."""
+def start_background(campaign: Campaign, loaders, executor: str = "local",
+                     workers: int | None = None) -> "BackgroundWork | None":
+    """The campaign's work beside the trials (:class:`BackgroundWork`: the pile's tables, then the
+    frequency-domain screening) started in a process of its own — or None when the trials run in this
+    process (one local worker: the tables are then made with the first case, the screening after the
+    trials, here). Pass it to :func:`run_campaign`; :meth:`BackgroundWork.close` it if the campaign does
+    not run."""
     if executor == "local" and (workers or os.cpu_count() or 1) == 1:
         return None
-    return BackgroundScreening(campaign, loaders)
+    return BackgroundWork(campaign, loaders)
 
 
 def _screening_job(campaign: Campaign, loaders) -> tuple[np.ndarray, list[str]]:
@@ -414,11 +460,19 @@ def _screening_job(campaign: Campaign, loaders) -> tuple[np.ndarray, list[str]]:
         return _screening(campaign, loaders)
 
 
-class BackgroundScreening:
-    """:func:`_screening` in a process of its own, started before the trials: with several workers (or
-    Dask) it runs beside them instead of after them. Pinned to one BLAS thread like every trial, so its
-    figures are the ones the campaign's own process would compute; if the process cannot give them,
-    they are computed here."""
+def _tables_job(campaign: Campaign, loaders) -> list:
+    with single_threaded(), warnings.catch_warnings():    # the values a trial's process would make
+        warnings.simplefilter("ignore")
+        return _campaign_tables(campaign, loaders[1])
+
+
+class BackgroundWork:
+    """What a campaign computes once beside its trials, in a process of its own started before its checks
+    (on the core they leave idle): first the ω tables of the pile's scattered wave of every case
+    (:func:`_campaign_tables`, which the first case's preparation waits for), then the frequency-domain
+    screening (:func:`_screening`, read when the trials are done). Pinned to one BLAS thread like every
+    trial, so its values are the ones the campaign's own process would make; if the process cannot give
+    them, they are made here."""
 
     def __init__(self, campaign: Campaign, loaders):
         import multiprocessing
@@ -428,17 +482,26 @@ class BackgroundScreening:
         method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
         self.pool = ProcessPoolExecutor(max_workers=1, mp_context=multiprocessing.get_context(method),
                                         initializer=_worker_init, initargs=(os.getpid(),))
-        self.future = self.pool.submit(_screening_job, campaign, loaders)
+        self.futures = (self.pool.submit(_tables_job, campaign, loaders),      # one process: in this order
+                        self.pool.submit(_screening_job, campaign, loaders))
 
-    def result(self) -> tuple[np.ndarray, list[str]]:
+    def tables(self) -> list:
+        """The pile's tables of every case (:func:`_campaign_tables`)."""
         try:
-            return self.future.result()
+            return self.futures[0].result()
+        except Exception:  # noqa: BLE001 — e.g. the process died: the campaign's own process makes them
+            return _tables_job(self.campaign, self.loaders)
+
+    def screening(self) -> tuple[np.ndarray, list[str]]:
+        """The screening's P(slip) per case and why there is none (:func:`_screening`)."""
+        try:
+            return self.futures[1].result()
         except Exception:  # noqa: BLE001 — e.g. the process died: the campaign's own process computes it
             return _screening_job(self.campaign, self.loaders)
 
     def close(self) -> None:
         """Stop the process now if it is still running (the campaign stopped early)."""
-        procs = [] if self.future.done() else list(getattr(self.pool, "_processes", {}).values())
+        procs = [] if all(f.done() for f in self.futures) else list(getattr(self.pool, "_processes", {}).values())
         self.pool.shutdown(wait=not procs, cancel_futures=True)
         for proc in procs:
             proc.kill()

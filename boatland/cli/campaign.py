@@ -46,7 +46,7 @@ def add_parser(sub) -> None:
 def cmd(args) -> int:
     from boatland.campaign import load_campaign, run_campaign
     from boatland.campaign.report import REPORT_FILES, write_report
-    from boatland.campaign.runner import check_cases, failures, start_screening
+    from boatland.campaign.runner import check_cases, failures, start_background
     from boatland.cli.common import check_memory
     from boatland.scenario_check import load, resolve_database
 
@@ -76,10 +76,10 @@ def cmd(args) -> int:
                    Output("--report", args.report, "folder", REPORT_FILES),
                    Output("--save-worst", worst_dir, "folder")], campaign.input_files())
     workers = 1 if args.scheduler else (args.workers or os.cpu_count() or 1)
-    # the frequency-domain screening needs none of the checks below: started first, it runs on the core
-    # they leave idle (stopped if they refuse the campaign)
-    screening = None if isee else start_screening(campaign, (load, resolve_database),
-                                                  "dask" if args.scheduler else "local", args.workers)
+    # the pile's tables and the frequency-domain screening need none of the checks below: started first,
+    # they run on the core the checks leave idle (stopped if they refuse the campaign)
+    background = None if isee else start_background(campaign, (load, resolve_database),
+                                                    "dask" if args.scheduler else "local", args.workers)
     try:
         for w in check_cases(campaign, resolve_database):
             print(f"warning: {w}", file=sys.stderr)
@@ -88,8 +88,8 @@ def cmd(args) -> int:
         check_memory(longest, resolve_database(longest), flag=f"{args.campaign}: duration",
                      copies=min(workers, campaign.n_trials))
     except BaseException:
-        if screening is not None:
-            screening.close()
+        if background is not None:
+            background.close()
         raise
     where = f"Dask scheduler {args.scheduler}" if args.scheduler else \
         f"{args.workers or os.cpu_count()} local worker process(es)"
@@ -123,7 +123,7 @@ def cmd(args) -> int:
 
         result = run_campaign(campaign, store, loaders=(load, resolve_database),
                               executor="dask" if args.scheduler else "local", workers=args.workers,
-                              scheduler=args.scheduler, progress=progress, screening=screening)
+                              scheduler=args.scheduler, progress=progress, background=background)
     table = result.table()
     failed = failures(campaign, table)
     n_failed = sum(len(v) for v in failed.values())

@@ -47,7 +47,8 @@ from boatland.waves.realisation import (Components, concatenate, n_components_fo
 from boatland.waves.spectra import SIGMA_A, SIGMA_B, bin_variance, spectrum_band, spreading_cos2s, tma
 
 __all__ = ["KINDS", "AMPLITUDES", "SeaStateWarning", "SpectrumPart", "SeaState", "RegularWave", "MeasuredRecord",
-           "spectrum_part_problems", "excitation_table", "wave_excitation", "pile_tables", "TABULATED_DIRECTIONS"]
+           "spectrum_part_problems", "excitation_table", "wave_excitation", "pile_tables", "pile_table_request",
+           "TABULATED_DIRECTIONS"]
 
 KINDS = ("jonswap", "pm", "tma")
 AMPLITUDES = ("deterministic", "rayleigh")
@@ -189,10 +190,23 @@ class _Waves:
         """The ω tables of the pile's scattered wave that :meth:`excitation` with the same arguments
         interpolates (:func:`pile_tables`): made once, they serve every trial of the same layout and sea
         directions, in this process or another (:func:`boatland.model.pile_diffraction.remember_tables`)."""
-        if pile is None:
+        request = self.pile_table_request(seed=seed, dt=dt, n_steps=n_steps, x0=x0, y0=y0, heading_deg=heading_deg,
+                                          pile=pile)
+        if request is None:
             return []
+        from boatland.model.pile_diffraction import scattered_tables
+
+        return scattered_tables(db, *request)
+
+    def pile_table_request(self, *, seed=None, dt: float, n_steps: int, x0: float = 0.0, y0: float = 0.0,
+                           heading_deg: float = 0.0, pile=None):
+        """What :meth:`pile_tables` makes, without making it (:func:`pile_table_request`): a campaign asks
+        this of every case and makes the tables of each layout together
+        (:func:`boatland.model.pile_diffraction.make_tables`)."""
+        if pile is None:
+            return None
         comps = self.realise(seed, n_steps * dt)
-        return pile_tables(comps, db, x0=x0, y0=y0, heading_deg=heading_deg, pile=(*pile, self.water_depth))
+        return pile_table_request(comps, x0=x0, y0=y0, heading_deg=heading_deg, pile=(*pile, self.water_depth))
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -624,14 +638,26 @@ def pile_tables(components: Components, db: HydroDB, *, x0: float = 0.0, y0: flo
     interpolates (:class:`boatland.model.pile_diffraction.ScatteredTable`; from this process's cache or
     made now). None without a pile or for a sea of more than :data:`TABULATED_DIRECTIONS` directions (its
     scattered wave is summed exactly). A campaign makes them once and ships them to its workers."""
-    if pile is None:
+    request = pile_table_request(components, x0=x0, y0=y0, heading_deg=heading_deg, pile=pile)
+    if request is None:
         return []
     from boatland.model.pile_diffraction import scattered_tables
 
+    return scattered_tables(db, *request)
+
+
+def pile_table_request(components: Components, *, x0: float = 0.0, y0: float = 0.0, heading_deg: float = 0.0,
+                       pile=None):
+    """The arguments of the tables :func:`pile_tables` makes
+    (:class:`boatland.model.pile_diffraction.TableRequest`), or None when it makes none."""
+    if pile is None:
+        return None
+    from boatland.model.pile_diffraction import TableRequest
+
     radius, position, depth, waves, tabulated = _pile_layout(components, x0, y0, pile)
     if not tabulated or not np.any(waves):
-        return []
-    return scattered_tables(db, position, heading_deg, radius, components.theta[waves], depth)
+        return None
+    return TableRequest(position, heading_deg, radius, components.theta[waves], depth)
 
 
 def wave_excitation(components: Components, db: HydroDB, *, dt: float, n_steps: int, x0: float = 0.0,

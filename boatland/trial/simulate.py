@@ -25,6 +25,7 @@ from boatland.integrate.cummins import OUTCOME_STATUSES
 from boatland.irf.impulse import IRFSettings
 from boatland.model.landed import check_memory, lumped_fender
 from boatland.model.motion import MotionArrays, compile_motion
+from boatland.model.pile_diffraction import scattered_tables
 from boatland.model.radiation import RadiationMemory, default_dt, radiation_memory
 from boatland.model.scenario import Scenario, ScenarioWarning
 from boatland.model.hydrodb import HydroDB
@@ -34,8 +35,8 @@ from boatland.trial.inputs import trial_inputs
 from boatland.trial.result import SERIES, Result
 from boatland.trial.sink import StepBlock, TrialInfo, TrialSink
 
-__all__ = ["simulate", "prepare_memory", "check_radiation", "motion_arrays", "pile_tables", "contact_arrays",
-           "thrust_series", "wave_ramp", "wave_start", "exposure_start", "BlowUpError"]
+__all__ = ["simulate", "prepare_memory", "check_radiation", "motion_arrays", "pile_tables", "pile_table_request",
+           "contact_arrays", "thrust_series", "wave_ramp", "wave_start", "exposure_start", "BlowUpError"]
 
 #: Runaway limits: no CTV landing survives these (linear hydrodynamics is meaningless beyond them).
 LIMIT_TRANS, LIMIT_ROT = 50.0, np.radians(60.0)
@@ -156,13 +157,22 @@ def pile_tables(scenario: Scenario, db: HydroDB) -> list:
     short-crested sea). They depend on the layout and the sea's directions, not on the seed: a campaign
     makes them once per case and ships them to its workers
     (:func:`boatland.model.pile_diffraction.remember_tables`)."""
+    request = pile_table_request(scenario, db)
+    return [] if request is None else scattered_tables(db, *request)
+
+
+def pile_table_request(scenario: Scenario, db: HydroDB):
+    """The arguments of the tables :func:`pile_tables` makes (:class:`boatland.model.pile_diffraction.TableRequest`),
+    or None: a campaign asks every case and makes the tables of a layout together
+    (:func:`boatland.model.pile_diffraction.make_tables`)."""
     waves = scenario.wave_model(db)
     pile = scenario.pile(db)
     if waves is None or pile is None:
-        return []
+        return None
     x0, y0, psi = scenario.start_pose()
-    return waves.pile_tables(db, seed=scenario.simulation.seed, dt=scenario.time_step(db), n_steps=scenario.n_steps(db),
-                             x0=x0, y0=y0, heading_deg=float(np.degrees(psi)), pile=pile)
+    return waves.pile_table_request(seed=scenario.simulation.seed, dt=scenario.time_step(db),
+                                    n_steps=scenario.n_steps(db), x0=x0, y0=y0, heading_deg=float(np.degrees(psi)),
+                                    pile=pile)
 
 
 @pinned

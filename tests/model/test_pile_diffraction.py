@@ -137,9 +137,42 @@ def test_scattered_tables_are_keyed_by_content_and_serve_another_process(ctv, mo
 
     monkeypatch.setattr(pd, "_TABLES", {})
     pd.remember_tables(pickle.loads(pickle.dumps(tables)))
-    monkeypatch.setattr(pd, "pile_scattered_components", made_again)
+    monkeypatch.setattr(pd, "_scattered_columns", made_again)
     twin = ctv.replace(X=ctv.X.copy())                               # another object, the same content
     assert pd.pile_scattered_interpolated(twin, BOW_AT_PILE, 0.0, A_PILE, om, th).tobytes() == made.tobytes()
     assert pd.pile_table_key(twin, BOW_AT_PILE, 0.0, A_PILE, float(np.unique(theta)[0])) == tables[0].key
     with pytest.raises(AssertionError, match="made again"):
         pd.pile_scattered_interpolated(ctv, (BOW_AT_PILE[0] - 1.0, 0.0), 0.0, A_PILE, om, th)
+
+
+def test_the_directions_of_a_layout_are_made_together_each_as_if_made_alone(ctv, monkeypatch):
+    """make_tables (a campaign's cases) makes every distinct table once, the directions of one layout in
+    passes of at most TABLE_BATCH (the Hankel functions and the series shared); each table is the one the
+    exact per-component sum gives on its grid (as the tables were made before issue 16), bit for bit."""
+    import boatland.model.pile_diffraction as pd
+    from boatland.waves.dispersion import wavenumber
+
+    monkeypatch.setattr(pd, "_TABLES", {})
+    monkeypatch.setattr(pd, "TABLE_BATCH", 2)
+    passes = []
+    columns = pd._scattered_columns
+
+    def counted(db, layout, thetas):
+        passes.append(len(thetas))
+        return columns(db, layout, thetas)
+
+    monkeypatch.setattr(pd, "_scattered_columns", counted)
+    aside = (BOW_AT_PILE[0] - 1.0, 2.0)
+    requests = [pd.TableRequest(BOW_AT_PILE, 0.0, A_PILE, np.radians([180.0, 135.0, 180.0])),
+                pd.TableRequest(BOW_AT_PILE, 0.0, A_PILE, np.radians([90.0])),
+                pd.TableRequest(aside, 0.0, A_PILE, np.radians([135.0]))]
+    tables = pd.make_tables(ctv, requests)
+    assert len(tables) == 4 and passes == [2, 1, 1]
+    for table in tables:
+        position, theta = (table.key[3], table.key[4]), table.key[-1]
+        grid = table.grid
+        exact = pile_scattered_components(ctv, position, 0.0, A_PILE, grid, np.full(grid.size, theta))
+        h = pd._table_layout(ctv, position, 0.0, A_PILE, None).h
+        expected = exact * np.exp(-1j * wavenumber(grid, h, ctv.g) * table.d)[None, :]
+        assert table.reduced.tobytes() == expected.tobytes()
+    assert pd.make_tables(ctv, requests[:1]) == tables[1:3] and passes == [2, 1, 1]     # kept: not made again
