@@ -28,7 +28,9 @@ each access. Steps are every step a trial integrates (settling and ramp included
    a worker while the other works too). ``--repeat N``: N rows per code, interleaved; the median and
    spread of the ratios.
 
-The machine is shared: the load average is printed before and after every row, CPU time beside wall.
+The machine is shared: the load average is printed before and after every row, CPU time beside wall,
+and (Linux) the share of the machine's CPU time the hypervisor took for others during the campaign
+("host steal", ``/proc/stat``).
 """
 
 from __future__ import annotations
@@ -193,6 +195,23 @@ def load_text() -> str:
     return "/".join(f"{x:.1f}" for x in os.getloadavg())
 
 
+def cpu_ticks() -> tuple[int, int] | None:
+    """(all, steal) CPU ticks of the machine since boot (Linux ``/proc/stat``; None elsewhere): *steal* is
+    the time the hypervisor ran something else while this guest's vCPUs wanted to run."""
+    try:
+        with open("/proc/stat", encoding="ascii") as f:
+            ticks = [int(v) for v in f.readline().split()[1:9]]
+    except (OSError, ValueError):
+        return None
+    return sum(ticks), ticks[7]
+
+
+def steal_text(t0, t1) -> str:
+    if t0 is None or t1 is None or t1[0] <= t0[0]:
+        return "–"
+    return f"{100 * (t1[1] - t0[1]) / (t1[0] - t0[0]):.1f} %"
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--accesses", type=float, nargs="+", default=[600.0, 1800.0, 10000.0])
@@ -242,8 +261,8 @@ def main() -> None:
                 print(f"| {name} | {t:.3f} | {100 * t / total:.1f} % |")
         print("\n| access [s] | trials × steps | workers | code | wall [s] | CPU [s] | campaign steps/s | "
               "kernel steps/s, one core busy: before → after | per core, both busy: before → after | "
-              "÷ (workers × kernel, one busy) | ÷ (workers × kernel, both busy) | load |")
-        print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+              "÷ (workers × kernel, one busy) | ÷ (workers × kernel, both busy) | host steal | load |")
+        print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
         codes = [("this", REPO)] + ([(f"before: {args.before.name}", args.before)] if args.before else [])
         from boatland.campaign.plan import load_campaign
 
@@ -258,7 +277,9 @@ def main() -> None:
                     load0 = load_text()
                     ks = kernels[access]                            # the machine's speed drifts: bracket
                     before, pair0 = kernel_rate(ks), kernel_pair_rate(ks)
+                    ticks0 = cpu_ticks()
                     wall, cpu = campaign(path, tmp / f"c{access:g}_{workers}_{row}.h5", workers, code)
+                    steal = steal_text(ticks0, cpu_ticks())
                     after, pair1 = kernel_rate(ks), kernel_pair_rate(ks)
                     rate, k_one = steps / wall, 0.5 * (before + after)
                     k_both = 0.5 * (pair0 + pair1) if workers > 1 else k_one
@@ -267,7 +288,7 @@ def main() -> None:
                     print(f"| {access:,.0f} | {c.n_trials} × {steps / c.n_trials:,.0f} | {workers} | {label} | "
                           f"{wall:.1f} | {cpu:.1f} | {rate:,.0f} | {before:,.0f} → {after:,.0f} | "
                           f"{pair0:,.0f} → {pair1:,.0f} | {100 * rate / (workers * k_one):.0f} % | "
-                          f"{100 * rate / (workers * k_both):.0f} % | {load0} → {load_text()} |", flush=True)
+                          f"{100 * rate / (workers * k_both):.0f} % | {steal} | {load0} → {load_text()} |", flush=True)
         if args.repeat > 1:
             print("\n| access [s] | workers | code | rows | ÷ (workers × kernel, one busy): median (min – max) "
                   "| ÷ (workers × kernel, both busy): median (min – max) | wall [s]: median (min – max) |")
