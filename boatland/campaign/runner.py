@@ -302,8 +302,8 @@ def _campaign_tables(campaign: Campaign, load_database, dbs: dict | None = None)
     """The ω tables of the pile's scattered wave of every case (:func:`boatland.trial.simulate.pile_tables`),
     the directions of each database and layout made together
     (:func:`boatland.model.pile_diffraction.make_tables`; three directions of the ctv24: 1.4 s instead of
-    2.6 s). None when there are more than a process keeps (then each case makes its own, as before), and
-    none for a case whose tables fail: its own preparation meets the error again."""
+    2.6 s). None at all when there are more than a process keeps (then each case makes its own), and none
+    for a case whose tables fail: its own preparation meets the error again."""
     from boatland.model.pile_diffraction import TABLE_CACHE_SIZE, make_tables
     from boatland.trial.simulate import pile_table_request
 

@@ -9,9 +9,9 @@ from pathlib import Path
 import numpy as np
 
 from boatland.atomic import atomic_path
+from boatland.contact.fender import OFF, OPEN
 from boatland.conventions import DOF_NAMES, DOF_UNITS
 from boatland.model.scenario_parts import Incidents
-from boatland.contact.fender import OFF, OPEN
 from boatland.trial.events import (SLID_OFF, Event, SlipEpisode, all_touching_fraction, column_abs_max, extract_events,
                                    first_entry, first_exceedance, landing_offset, largest_single_slide,
                                    slip_episodes, slip_start_rows, worst_landing_offset)
@@ -226,7 +226,7 @@ class Result(TrialSeries):
         after = rows >= k0                             # the stick → slip events after the settling
         worst = self._worst_offset()
         touching = self.mode > 0
-        landed = touching[self._settle_row():]         # forces after the settling: not the first touch
+        landed = touching[k0:]                         # forces after the settling: not the first touch
         if not landed.any():
             landed = touching
         fn = np.where(landed, self.fn[len(self.t) - len(landed):], np.nan)
