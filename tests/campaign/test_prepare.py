@@ -61,7 +61,7 @@ def test_shipped_case_data_gives_the_trial_a_worker_makes_itself(mini, monkeypat
     monkeypatch.setattr(pd, "_TABLES", {})
     for name in ("prepare_memory", "check_radiation", "compile_motion"):
         monkeypatch.setattr(sim, name, made_again)
-    monkeypatch.setattr(pd, "pile_scattered_components", made_again)
+    monkeypatch.setattr(pd, "_scattered_columns", made_again)
     shipped = execute_trial(str(path), spec, LOADERS, None, pickle.loads(pickle.dumps(shared[spec.case])))
     assert shipped["status"] == 0 and bits(shipped) == bits(own)
 
@@ -84,3 +84,29 @@ def test_a_case_that_cannot_be_prepared_runs_as_before(mini, tmp_path, monkeypat
     assert sorted(prepare_cases(campaign, resolve_database)) == [0, 1, 3]
     run_campaign(campaign, tmp_path / "some.h5", loaders=LOADERS, workers=1)
     same(summaries(tmp_path / "all.h5"), summaries(tmp_path / "some.h5"))
+
+
+def test_the_tables_of_every_case_are_made_together_beside_the_checks(mini, monkeypatch):
+    """The campaign's pile tables (its two wave directions) come from one pass of the series in the
+    background process (a real forked process, started before the checks); the campaign's own process
+    then makes none, and they are the tables it would have made itself, bit for bit."""
+    path, campaign = mini
+    monkeypatch.setattr(pd, "_TABLES", {})
+    background = runner.start_background(campaign, LOADERS, "local", 2)
+    try:
+        made = background.tables()
+        passes = []
+        columns = pd._scattered_columns
+        monkeypatch.setattr(pd, "_scattered_columns", lambda db, layout, th: passes.append(len(th)) or
+                            columns(db, layout, th))
+        own = runner._campaign_tables(campaign, resolve_database)
+        assert passes == [2] and len(made) == len(own) == 2
+        assert [(t.key, t.reduced.tobytes()) for t in made] == [(t.key, t.reduced.tobytes()) for t in own]
+        monkeypatch.setattr(pd, "_TABLES", {})
+        monkeypatch.setattr(pd, "_scattered_columns", made_again)
+        check_cases(campaign, resolve_database)
+        prepared = runner._CasePreparation(campaign, resolve_database, background)
+        data = [prepared.get(case) for case in range(4)]
+        assert all(d is not None and len(d.tables) == 1 for d in data)
+    finally:
+        background.close()

@@ -143,11 +143,11 @@ def test_bad_campaign_files_are_one_clear_error(tmp_path, extra, expected):
     assert r.returncode == 2 and expected in r.stderr and "Traceback" not in r.stderr, r.stderr
 
 
-def test_a_campaign_the_checks_refuse_stops_the_screening_started_before_them(tmp_path):
-    """The CLI starts the frequency-domain screening before its checks (issue 16: on the core they leave
-    idle); when a case fails them the user sees what a refused campaign always gave — one clear line,
-    exit 2 — and no process of the campaign is left (the CLI stops the screening's; it would also die
-    with its parent, PR_SET_PDEATHSIG)."""
+def test_a_campaign_the_checks_refuse_stops_the_background_work_started_before_them(tmp_path):
+    """The CLI starts the pile's tables and the frequency-domain screening before its checks (issue 16: on
+    the core they leave idle); when a case fails them the user sees what a refused campaign always gave —
+    one clear line, exit 2 — and no process of the campaign is left (the CLI stops the background
+    process; it would also die with its parent, PR_SET_PDEATHSIG)."""
     path = campaign_file(tmp_path, name="refused_by_checks", seeds=2)
     path.write_text(path.read_text().replace("[axes]\n", '[axes]\n"simulation.dt" = [0.05, 0.5]\n', 1))
     r = run("campaign", path, "-o", tmp_path / "refused.h5", "--workers", "2", timeout=120)
