@@ -23,9 +23,9 @@ def add_parser(sub) -> None:
     how.add_argument("--spawn", action="store_true", help="start a Rerun viewer (needs a display)")
     how.add_argument("--connect", metavar="URL", nargs="?", const="", help="send to a Rerun viewer already listening")
     rpl.add_argument("--bind", metavar="ADDR", default="127.0.0.1",
-                     help="address the --serve server listens on (default 127.0.0.1: this machine only; 0.0.0.0 "
-                          "opens it to the network, without authentication)")
-    rpl.add_argument("--port", type=integer(1, 65535), default=9876, help="port of --serve (default 9876)")
+                     help="address the --serve server, or the viewer --spawn starts, listens on (default 127.0.0.1: "
+                          "this machine only; 0.0.0.0 opens it to the network, without authentication)")
+    rpl.add_argument("--port", type=integer(1, 65535), default=9876, help="port of --serve or --spawn's viewer (default 9876)")
     rpl.set_defaults(func=cmd)
 
 

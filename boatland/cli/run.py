@@ -49,10 +49,10 @@ def add_parser(sub) -> None:
                           "rerun+http://127.0.0.1:9876/proxy), 'spawn' (start a viewer; needs a display). "
                           "Never waits for an absent viewer: that is an error before the run")
     run.add_argument("--bind", metavar="ADDR", default="127.0.0.1",
-                     help="address the --rerun serve server listens on (default 127.0.0.1: this machine only; "
-                          "0.0.0.0 opens it to the network, without authentication)")
+                     help="address the --rerun serve server, or the viewer --rerun spawn starts, listens on (default "
+                          "127.0.0.1: this machine only; 0.0.0.0 opens it to the network, without authentication)")
     run.add_argument("--port", type=integer(1, 65535), default=9876,
-                     help="port of --rerun serve (default 9876)")
+                     help="port of --rerun serve or of the viewer --rerun spawn starts (default 9876)")
     run.add_argument("--progress-file", type=Path, metavar="FILE",
                      help="keep the kernel's step counter in FILE while the trial runs (for scripts and tests)")
     run.set_defaults(func=cmd)

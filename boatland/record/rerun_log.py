@@ -6,9 +6,12 @@ process that viewers connect to, late viewers get the whole run), ``connect[=URL
 already listening; checked before the run), ``spawn`` (start a native viewer; needs a display). None of
 them waits for a viewer that is not there: an absent viewer is an error before the trial starts.
 
-The ``serve`` server listens on 127.0.0.1 (this machine only) unless the caller binds it wider
-(``bind="0.0.0.0"``, with a warning: Rerun's server has no authentication). A port already in use is an
-error before the trial starts (Rerun itself would only log it and serve nothing).
+The ``serve`` server and the viewer ``spawn`` starts listen on 127.0.0.1 (this machine only) unless the
+caller binds them wider (``bind="0.0.0.0"``, with a warning: Rerun's server has no authentication) —
+``rerun.spawn`` itself would start the viewer on every interface (the ``rerun`` command's default bind
+is 0.0.0.0), so :func:`spawn_viewer` starts it with ``--bind``. A port already in use is an error
+before the trial starts for ``serve`` (Rerun itself would only log it and serve nothing); ``spawn``
+connects to the viewer already listening there, as ``rerun.spawn`` does.
 """
 
 from __future__ import annotations
@@ -27,7 +30,8 @@ from boatland.record.mcap_log import IncidentWatch, columns_from_block, end_even
 from boatland.record.scene import COLORS, FENDER_RADIUS, FORCE_SCALE, MODE_COLORS, PATCH_DT, PILE_BOTTOM, PILE_TOP, \
     Scene, fender_forces, scene_from_trial
 
-__all__ = ["RerunView", "RerunLog", "parse_target", "open_stream", "check_target", "blueprint", "serve_until_interrupted", "APPLICATION_ID", "TIMELINE"]
+__all__ = ["RerunView", "RerunLog", "parse_target", "open_stream", "check_target", "blueprint", "serve_until_interrupted",
+           "spawn_viewer", "APPLICATION_ID", "TIMELINE"]
 
 APPLICATION_ID = "boatland"
 TIMELINE = "sim_time"
@@ -76,17 +80,51 @@ def check_port_free(bind: str, port: int) -> None:
 
 
 def _wait_listening(bind: str, port: int, timeout: float = 5.0) -> bool:
+    """Whether something accepts connections on ``bind``:``port`` within ``timeout`` s (tried at least once)."""
     import time
 
     host = "127.0.0.1" if bind in ("0.0.0.0", "") else ("::1" if bind == "::" else bind)
     deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
+    while True:
         try:
             with socket.create_connection((host, port), timeout=0.5):
                 return True
         except OSError:
+            if time.monotonic() >= deadline:
+                return False
             time.sleep(0.05)
-    return False
+
+
+def _warn_if_open(bind: str, port: int, what: str) -> None:
+    if not _is_loopback(bind):
+        print(f"warning: rerun: {what} on {bind}:{port} without authentication: anyone who can reach this "
+              "machine can read the run", file=sys.stderr)
+
+
+#: Seconds to wait for a spawned viewer to accept connections.
+SPAWN_TIMEOUT = 20.0
+
+
+def spawn_viewer(bind: str = DEFAULT_BIND, port: int = DEFAULT_PORT) -> None:
+    """Start a native Rerun viewer listening on ``bind``:``port`` (detached: it outlives the run) and wait
+    until it accepts connections; a viewer already listening there is used as it is.
+
+    What ``rerun.spawn`` does, but with the listening address: it runs ``rerun --port N`` and the
+    ``rerun`` command binds 0.0.0.0 unless told otherwise (``rerun --help``, 0.41), which would open every
+    spawned viewer to the network. Same memory limits as ``rerun.spawn`` (75 % for the viewer, 1 GiB for
+    its server)."""
+    import subprocess
+
+    if _wait_listening(bind, port, timeout=0.0):
+        return
+    _warn_if_open(bind, port, "the spawned viewer listens")
+    subprocess.Popen([sys.executable, "-m", "rerun_cli", "--bind", bind, "--port", str(port), "--memory-limit", "75%",
+                      "--server-memory-limit", "1GiB"], env={**os.environ, "RERUN_APP_ONLY": "true"},
+                     stdin=subprocess.DEVNULL, start_new_session=True)
+    if not _wait_listening(bind, port, timeout=SPAWN_TIMEOUT):
+        raise BoatlandInputError(f"--rerun spawn: the Rerun viewer did not start listening on {bind}:{port} within "
+                                 f"{SPAWN_TIMEOUT:g} s (its own messages are above); use --rerun serve, or "
+                                 "--rerun save=FILE.rrd")
 
 
 def _is_loopback(bind: str) -> bool:
@@ -167,7 +205,8 @@ def open_stream(target: str, *, recording_id: str | None = None, n_contacts: int
     """A RecordingStream sending to ``target`` (checked with :func:`check_target`), with the default layout
     (its camera on ``scene``'s bow and landing).
 
-    ``bind``, ``port``: where a ``serve`` target listens (default 127.0.0.1:9876: this machine only).
+    ``bind``, ``port``: where a ``serve`` target, or the viewer ``spawn`` starts, listens (default
+    127.0.0.1:9876: this machine only).
 
     Returns (stream, kind, uri-or-path)."""
     import rerun as rr
@@ -179,23 +218,28 @@ def open_stream(target: str, *, recording_id: str | None = None, n_contacts: int
     if kind == "save":
         rec.save(arg, default_blueprint=bp)
     elif kind == "serve":
-        if not _is_loopback(bind):
-            print(f"warning: rerun: serving on {bind}:{port} without authentication: anyone who can reach this "
-                  "machine can read the run", file=sys.stderr)
+        _warn_if_open(bind, port, "serving")
         sink = rr.GrpcServerSink(bind_ip=bind, port=port)
         rec.set_sinks(sink, default_blueprint=bp)
         if not _wait_listening(bind, port):
             rec.disconnect()
             raise BoatlandInputError(f"--rerun serve: the Rerun server did not start listening on {bind}:{port}")
-        host = "127.0.0.1" if not bind or bind in ("0.0.0.0", "::") or _is_loopback(bind) else bind
-        where = f"rerun+http://{host}:{port}/proxy"
+        where = _proxy_url(bind, port)
         if not quiet:
             print(f"rerun: serving the run on {bind}:{port}: open it with: rerun {where}", file=sys.stderr)
     elif kind == "connect":
         rec.connect_grpc(arg, default_blueprint=bp)
     else:
-        rec.spawn(default_blueprint=bp)
+        spawn_viewer(bind, port)
+        where = _proxy_url(bind, port)
+        rec.connect_grpc(where, default_blueprint=bp)
     return rec, kind, where
+
+
+def _proxy_url(bind: str, port: int) -> str:
+    """The URL a viewer on this machine opens for a server listening on ``bind``:``port``."""
+    host = "127.0.0.1" if not bind or bind in ("0.0.0.0", "::") or _is_loopback(bind) else bind
+    return f"rerun+http://{host}:{port}/proxy"
 
 
 class RerunView:

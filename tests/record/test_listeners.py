@@ -77,6 +77,34 @@ def test_a_wider_bind_must_be_asked_for_and_warns(tmp_path):
     assert ("0.0.0.0", port) in seen and "without authentication" in err
 
 
+@pytest.mark.skipif(shutil.which("xvfb-run") is None, reason="needs xvfb-run (a display for the viewer)")
+def test_the_viewer_spawn_starts_listens_on_loopback_only(tmp_path):
+    """``--rerun spawn`` starts a native viewer (under a virtual display here); ``rerun.spawn`` would start it
+    on 0.0.0.0 (the ``rerun`` command's default bind), boatland starts it on 127.0.0.1 — every listener
+    on the run's port, and every Rerun viewer's, is on loopback."""
+    port = free_port()
+    p = subprocess.Popen(["xvfb-run", "-a", sys.executable, "-m", "boatland", "run", "--duration", "5", "--no-log",
+                          "--rerun", "spawn", "--port", str(port)], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                         stdin=subprocess.DEVNULL, text=True, env=ENV)
+    seen = set()
+    try:
+        deadline = time.monotonic() + 120
+        while p.poll() is None and time.monotonic() < deadline:
+            out = subprocess.run(["ss", "-ltnpH"], capture_output=True, text=True).stdout
+            for line in out.splitlines():                       # on the run's port, or a Rerun viewer's
+                addr, _, pt = line.split()[3].rpartition(":")
+                if int(pt) == port or '(("rerun",' in line:
+                    seen.add(addr.strip("[]"))
+            time.sleep(0.05)
+        out, err = p.communicate(timeout=60)
+    finally:
+        if p.poll() is None:
+            p.kill()
+        subprocess.run(["pkill", "-f", f"--port {port}"], capture_output=True)   # the detached viewer, if left
+    assert p.returncode == 0, err
+    assert "HELD" in out and seen == {"127.0.0.1"}, (seen, err[-2000:])
+
+
 def test_a_busy_port_is_an_error_before_the_run(tmp_path):
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))
