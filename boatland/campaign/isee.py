@@ -194,7 +194,7 @@ def _models(ctx: dict, campaign: Campaign, case: int, hs: float, loaders) -> Lev
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             sc0 = level_scenario(campaign, case, None)
-            dbkey = str(sc0.vessel.database_path or sc0.vessel.database)
+            dbkey = sc0.vessel.database_key
             if dbkey not in ctx["db"]:
                 ctx["db"][dbkey] = loaders[1](sc0)
             db = ctx["db"][dbkey]
@@ -286,7 +286,7 @@ def execute_sample(source: str, spec: SampleSpec, loaders, plain: bool = False) 
             sc = model.scenario
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")
-                dbkey = str(sc.vessel.database_path or sc.vessel.database)
+                dbkey = sc.vessel.database_key
                 db = ctx["db"][dbkey]
                 rad = sc.radiation
                 mkey = (dbkey, rad.method, rad.memory, rad.tail, rad.taper)
@@ -658,7 +658,7 @@ def _fd_case(campaign, c, loaders, dbs):
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")
                 sc = level_scenario(campaign, c, None)
-                dkey = str(sc.vessel.database_path or sc.vessel.database)
+                dkey = sc.vessel.database_key
                 if dkey not in dbs:
                     dbs[dkey] = loaders[1](sc)
                 db = dbs[dkey]

@@ -131,7 +131,7 @@ def execute_trial(source: str, spec: TrialSpec, loaders, keep_dir: str | None = 
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             scenario = campaign.scenario_for(spec)
-            dbkey = str(scenario.vessel.database_path or scenario.vessel.database)
+            dbkey = scenario.vessel.database_key
             if dbkey not in ctx["db"]:
                 ctx["db"][dbkey] = loaders[1](scenario)
             db = ctx["db"][dbkey]
@@ -206,7 +206,7 @@ def _checked(campaign: Campaign, load_database) -> dict:
         warnings.simplefilter("ignore")
         for case in campaign.cases:
             sc = campaign.scenario_for(_first_trial(campaign, case.index))
-            dbkey = str(sc.vessel.database_path or sc.vessel.database)
+            dbkey = sc.vessel.database_key
             if dbkey not in dbs:
                 dbs[dbkey] = load_database(sc)
             db = dbs[dbkey]
@@ -289,7 +289,7 @@ class _CasePreparation:
         from boatland.trial.simulate import motion_arrays, pile_tables
 
         sc = self.campaign.scenario_for(_first_trial(self.campaign, case))
-        dbkey = str(sc.vessel.database_path or sc.vessel.database)
+        dbkey = sc.vessel.database_key
         db = self.checked["dbs"][dbkey]
         mkey = _memory_key(dbkey, sc.radiation)
         akey = (mkey, sc.time_step(db))
@@ -312,7 +312,7 @@ def _campaign_tables(campaign: Campaign, load_database, dbs: dict | None = None)
     for case in campaign.cases:
         try:
             sc = campaign.scenario_for(_first_trial(campaign, case.index))
-            dbkey = str(sc.vessel.database_path or sc.vessel.database)
+            dbkey = sc.vessel.database_key
             if dbkey not in dbs:
                 dbs[dbkey] = load_database(sc)
             request = pile_table_request(sc, dbs[dbkey])
@@ -533,7 +533,7 @@ def _screening(campaign: Campaign, loaders) -> tuple[np.ndarray, list[str]]:
                 continue
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")
-                key = str(sc.vessel.database_path or sc.vessel.database)
+                key = sc.vessel.database_key
                 if key not in dbs:
                     dbs[key] = loaders[1](sc)
                 db = dbs[key]

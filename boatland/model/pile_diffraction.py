@@ -198,9 +198,14 @@ def pile_scattered_components(db: HydroDB, position, heading_deg: float, pile_ra
     th = np.atleast_1d(np.asarray(theta, dtype=float))
     field = cylinder_field(xg[:, 0], xg[:, 1], xg[:, 2], om, th, a, h, g=db.g, rho=db.rho, part=part,
                            paired=True, tol=tol)
-    F = -(N.T @ field.p)  # (6, N)
-    k = wavenumber(om, h, db.g)
-    return F * np.exp(1j * k * (pos[0] * np.cos(th) + pos[1] * np.sin(th)))[None, :]
+    return _hull_force(N, field.p, wavenumber(om, h, db.g), pos, th)
+
+
+def _hull_force(N: np.ndarray, p: np.ndarray, k: np.ndarray, pos: np.ndarray, th: np.ndarray) -> np.ndarray:
+    """X^s (6, n) from the scattered pressure ``p`` (P, n) at the panel centroids: the panels' generalised
+    normals × areas ``N`` (P, 6) (minus: the water pushes along −n), referred to the incident elevation at
+    the reference point ``pos`` for waves of number ``k`` travelling towards ``th`` (module docstring)."""
+    return -(N.T @ p) * np.exp(1j * k * (pos[0] * np.cos(th) + pos[1] * np.sin(th)))[None, :]
 
 
 #: Spacing [rad/s] of the ω grid :func:`pile_scattered_interpolated` tabulates X^s on.
@@ -315,12 +320,12 @@ def scattered_tables(db: HydroDB, position, heading_deg: float, pile_radius: flo
     thetas = [float(t) for t in np.unique(np.asarray(theta, dtype=float))]
     made = {t: table for t in thetas if (table := _TABLES.get((*layout.key, t))) is not None}
     missing = [t for t in thetas if t not in made]
+    k = wavenumber(layout.grid, layout.h, db.g) if missing else None
     for start in range(0, len(missing), TABLE_BATCH):
         batch = missing[start:start + TABLE_BATCH]
-        for t, Xs in zip(batch, _scattered_columns(db, layout, batch)):
+        for t, Xs in zip(batch, _scattered_columns(db, layout, k, batch)):
             d = layout.pos[0] * math.cos(t) + layout.pos[1] * math.sin(t)
-            table = ScatteredTable((*layout.key, t), layout.grid,
-                                   Xs * np.exp(-1j * wavenumber(layout.grid, layout.h, db.g) * d)[None, :], d)
+            table = ScatteredTable((*layout.key, t), layout.grid, Xs * np.exp(-1j * k * d)[None, :], d)
             _remember(table)
             made[t] = table
     return [made[t] for t in thetas]
@@ -331,21 +336,18 @@ def scattered_tables(db: HydroDB, position, heading_deg: float, pile_radius: flo
 TABLE_BATCH = 4
 
 
-def _scattered_columns(db: HydroDB, layout: _TableLayout, thetas: list[float]) -> list[np.ndarray]:
-    """X^s on the table grid for each direction θ of ``thetas`` (global) — :func:`pile_scattered_components`
-    at (ω, θ) for every ω of the grid, to the bit — from one :func:`~boatland.waves.diffraction.cylinder_field`
-    pass for all of them: the Hankel functions of the panels, the series lengths and the coefficients
-    depend on ω and the panels, not on θ (of one table's 0.87 s, 0.6 s is theirs)."""
+def _scattered_columns(db: HydroDB, layout: _TableLayout, k: np.ndarray, thetas: list[float]) -> list[np.ndarray]:
+    """X^s on the table grid (wave numbers ``k``) for each direction θ of ``thetas`` (global) —
+    :func:`pile_scattered_components` at (ω, θ) for every ω of the grid, to the bit — from one
+    :func:`~boatland.waves.diffraction.cylinder_field` pass for all of them: the Hankel functions of the
+    panels, the series lengths and the coefficients depend on ω and the panels, not on θ (of one table's
+    0.87 s, 0.6 s is theirs)."""
     xg, grid = layout.xg, layout.grid
     field = cylinder_field(xg[:, 0], xg[:, 1], xg[:, 2], grid, np.asarray(thetas), layout.a, layout.h, g=db.g,
                            rho=db.rho, part="scattered", tol=TOL)
-    k = wavenumber(grid, layout.h, db.g)
-    out = []
-    for j, t in enumerate(thetas):
-        th = np.full(grid.size, t)                 # as pile_scattered_components' paired directions
-        F = -(layout.N.T @ np.ascontiguousarray(field.p[:, :, j]))
-        out.append(F * np.exp(1j * k * (layout.pos[0] * np.cos(th) + layout.pos[1] * np.sin(th)))[None, :])
-    return out
+    return [_hull_force(layout.N, np.ascontiguousarray(field.p[:, :, j]), k, layout.pos,
+                        np.full(grid.size, t))               # as pile_scattered_components' paired directions
+            for j, t in enumerate(thetas)]
 
 
 class TableRequest(NamedTuple):

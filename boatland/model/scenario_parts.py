@@ -102,6 +102,12 @@ class VesselSetup:
     def is_builtin(self) -> bool:
         return self.database_path is None
 
+    @property
+    def database_key(self) -> str:
+        """The database as one string — its resolved file, or the built-in name: scenarios with the same key
+        share one loaded database (a campaign loads each once)."""
+        return str(self.database_path or self.database)
+
 
 @dataclass(frozen=True, kw_only=True)
 class Radiation:

@@ -47,7 +47,7 @@ from boatland.waves.realisation import (Components, concatenate, n_components_fo
 from boatland.waves.spectra import SIGMA_A, SIGMA_B, bin_variance, spectrum_band, spreading_cos2s, tma
 
 __all__ = ["KINDS", "AMPLITUDES", "SeaStateWarning", "SpectrumPart", "SeaState", "RegularWave", "MeasuredRecord",
-           "spectrum_part_problems", "excitation_table", "wave_excitation", "pile_tables", "pile_table_request",
+           "spectrum_part_problems", "excitation_table", "wave_excitation", "pile_table_request",
            "TABULATED_DIRECTIONS"]
 
 KINDS = ("jonswap", "pm", "tma")
@@ -185,24 +185,14 @@ class _Waves:
         return wave_excitation(comps, db, dt=dt, n_steps=n_steps, x0=x0, y0=y0, heading_deg=heading_deg,
                                ramp_time=T_ramp, pile=None if pile is None else (*pile, self.water_depth))
 
-    def pile_tables(self, db: HydroDB, *, seed=None, dt: float, n_steps: int, x0: float = 0.0, y0: float = 0.0,
-                    heading_deg: float = 0.0, pile=None) -> list:
-        """The ω tables of the pile's scattered wave that :meth:`excitation` with the same arguments
-        interpolates (:func:`pile_tables`): made once, they serve every trial of the same layout and sea
-        directions, in this process or another (:func:`boatland.model.pile_diffraction.remember_tables`)."""
-        request = self.pile_table_request(seed=seed, dt=dt, n_steps=n_steps, x0=x0, y0=y0, heading_deg=heading_deg,
-                                          pile=pile)
-        if request is None:
-            return []
-        from boatland.model.pile_diffraction import scattered_tables
-
-        return scattered_tables(db, *request)
-
     def pile_table_request(self, *, seed=None, dt: float, n_steps: int, x0: float = 0.0, y0: float = 0.0,
                            heading_deg: float = 0.0, pile=None):
-        """What :meth:`pile_tables` makes, without making it (:func:`pile_table_request`): a campaign asks
-        this of every case and makes the tables of each layout together
-        (:func:`boatland.model.pile_diffraction.make_tables`)."""
+        """The ω tables of the pile's scattered wave that :meth:`excitation` with the same arguments
+        interpolates, as a :class:`~boatland.model.pile_diffraction.TableRequest` (None: none;
+        :func:`pile_table_request`). Made once (:func:`~boatland.model.pile_diffraction.scattered_tables`;
+        a campaign makes those of every case together, :func:`~boatland.model.pile_diffraction.make_tables`),
+        they serve every trial of the same layout and sea directions, in this process or another
+        (:func:`~boatland.model.pile_diffraction.remember_tables`)."""
         if pile is None:
             return None
         comps = self.realise(seed, n_steps * dt)
@@ -632,24 +622,12 @@ def _pile_layout(components: Components, x0: float, y0: float, pile):
     return radius, (float(x0) - px, float(y0) - py), None if math.isinf(depth) else depth, waves, tabulated
 
 
-def pile_tables(components: Components, db: HydroDB, *, x0: float = 0.0, y0: float = 0.0, heading_deg: float = 0.0,
-                pile=None) -> list:
-    """The ω tables of the pile's scattered wave that :func:`wave_excitation` with the same arguments
-    interpolates (:class:`boatland.model.pile_diffraction.ScatteredTable`; from this process's cache or
-    made now). None without a pile or for a sea of more than :data:`TABULATED_DIRECTIONS` directions (its
-    scattered wave is summed exactly). A campaign makes them once and ships them to its workers."""
-    request = pile_table_request(components, x0=x0, y0=y0, heading_deg=heading_deg, pile=pile)
-    if request is None:
-        return []
-    from boatland.model.pile_diffraction import scattered_tables
-
-    return scattered_tables(db, *request)
-
-
 def pile_table_request(components: Components, *, x0: float = 0.0, y0: float = 0.0, heading_deg: float = 0.0,
                        pile=None):
-    """The arguments of the tables :func:`pile_tables` makes
-    (:class:`boatland.model.pile_diffraction.TableRequest`), or None when it makes none."""
+    """The ω tables of the pile's scattered wave that :func:`wave_excitation` with the same arguments
+    interpolates, as the arguments of :func:`boatland.model.pile_diffraction.scattered_tables`
+    (:class:`~boatland.model.pile_diffraction.TableRequest`); None without a pile or for a sea of more
+    than :data:`TABULATED_DIRECTIONS` directions (its scattered wave is summed exactly)."""
     if pile is None:
         return None
     from boatland.model.pile_diffraction import TableRequest

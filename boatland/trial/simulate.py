@@ -155,7 +155,8 @@ def pile_tables(scenario: Scenario, db: HydroDB) -> list:
     """The ω tables of the pile's scattered wave a trial of ``scenario`` interpolates
     (:class:`boatland.model.pile_diffraction.ScatteredTable`; none without waves, a pile or for a
     short-crested sea). They depend on the layout and the sea's directions, not on the seed: a campaign
-    makes them once per case and ships them to its workers
+    makes those of all its cases once (:func:`pile_table_request`,
+    :func:`boatland.model.pile_diffraction.make_tables`) and ships them to its workers
     (:func:`boatland.model.pile_diffraction.remember_tables`)."""
     request = pile_table_request(scenario, db)
     return [] if request is None else scattered_tables(db, *request)

@@ -97,8 +97,8 @@ def test_the_tables_of_every_case_are_made_together_beside_the_checks(mini, monk
         made = background.tables()
         passes = []
         columns = pd._scattered_columns
-        monkeypatch.setattr(pd, "_scattered_columns", lambda db, layout, th: passes.append(len(th)) or
-                            columns(db, layout, th))
+        monkeypatch.setattr(pd, "_scattered_columns", lambda db, layout, k, th: passes.append(len(th)) or
+                            columns(db, layout, k, th))
         own = runner._campaign_tables(campaign, resolve_database)
         assert passes == [2] and len(made) == len(own) == 2
         assert [(t.key, t.reduced.tobytes()) for t in made] == [(t.key, t.reduced.tobytes()) for t in own]

@@ -157,9 +157,9 @@ def test_the_directions_of_a_layout_are_made_together_each_as_if_made_alone(ctv,
     passes = []
     columns = pd._scattered_columns
 
-    def counted(db, layout, thetas):
+    def counted(db, layout, k, thetas):
         passes.append(len(thetas))
-        return columns(db, layout, thetas)
+        return columns(db, layout, k, thetas)
 
     monkeypatch.setattr(pd, "_scattered_columns", counted)
     aside = (BOW_AT_PILE[0] - 1.0, 2.0)
