@@ -50,11 +50,14 @@ def unused_port() -> int:
     return free_port()
 
 
-def kill_repeatedly(campaign, store, kills: int, seed: int, *, wait: float = 120.0, jitter: float = 1.0) -> list[int]:
+def kill_repeatedly(campaign, store, kills: int, seed: int, total: int, *, wait: float = 120.0,
+                    jitter: float = 0.05) -> list[int]:
     """Start ``boatland campaign CAMPAIGN -o STORE --workers 1`` ``kills`` times, each time SIGKILLing it
-    at a random moment (uniform in [0, ``jitter``] s, seeded) after its first new trial reached the disk
-    (``wait``: the longest start-up to wait for); returns the trials on disk (store + journal) after each
-    kill."""
+    at a random moment of its progress: once a seeded random number of its new trials — between its
+    first and half of the ``total`` − done still to run — has reached the disk, plus a random [0,
+    ``jitter``] s (``wait``: the longest start-up to wait for). Counted in trials rather than seconds, a
+    kill lands mid-campaign however fast the machine runs it. Returns the trials on disk (store +
+    journal) after each kill."""
     import signal
 
     import h5py
@@ -74,11 +77,12 @@ def kill_repeatedly(campaign, store, kills: int, seed: int, *, wait: float = 120
     partial = []
     for _ in range(kills):
         before = on_disk()
+        target = before + int(rng.integers(1, max(1, (total - before) // 2) + 1))
         p = subprocess.Popen([sys.executable, "-m", "boatland", "campaign", str(campaign), "-o", str(store),
                               "--workers", "1"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         deadline = time.monotonic() + wait
-        while on_disk() == before and p.poll() is None and time.monotonic() < deadline:
-            time.sleep(0.05)                       # wait for this run's first new trial (start-up varies)
+        while on_disk() < target and p.poll() is None and time.monotonic() < deadline:
+            time.sleep(0.01)                       # start-up varies; then the trials arrive
         time.sleep(float(rng.uniform(0.0, jitter)))  # then kill at a random moment
         p.send_signal(signal.SIGKILL)
         p.wait()

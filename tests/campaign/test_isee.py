@@ -150,7 +150,7 @@ def test_a_real_dask_cluster_gives_the_same_store(reference, tmp_path, dask_clus
 def test_resume_after_sigkill_equals_an_uninterrupted_run(reference, tmp_path, sigkill_campaign):
     camp, one, _ = reference
     store = tmp_path / "killed.h5"
-    partial = sigkill_campaign(camp, store, kills=3, seed=4, wait=180.0, jitter=2.0)
+    partial = sigkill_campaign(camp, store, kills=3, seed=4, total=len(summaries(one)["trial"]), wait=180.0)
     r = run("campaign", camp, "-o", store, "--workers", "1")
     assert r.returncode == 0, r.stderr
     print("samples on disk after each kill:", partial)

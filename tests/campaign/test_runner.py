@@ -110,7 +110,7 @@ def test_resume_after_sigkill_equals_an_uninterrupted_run(tmp_path, sigkill_camp
     clean = tmp_path / "clean.h5"
     assert run("campaign", camp, "-o", clean, "--workers", "1").returncode == 0
     store = tmp_path / "killed.h5"
-    partial = sigkill_campaign(camp, store, kills=4, seed=3)
+    partial = sigkill_campaign(camp, store, kills=4, seed=3, total=16)
     r = run("campaign", camp, "-o", store, "--workers", "1")
     assert r.returncode == 0, r.stderr
     print("trials on disk after each kill:", partial)
