@@ -14,9 +14,9 @@ import platform
 import numpy as np
 
 from boatland.hydro.builtin import load_builtin
-from boatland.model.hull import PanelCounts, WigleyCatamaran
-from boatland.model.hydrodb import HydroDB
-from boatland.model.pile_diffraction import pile_scattered_excitation
+from boatland.vessel.wigley import PanelCounts, WigleyCatamaran
+from boatland.vessel.database import HydroDB
+from boatland.sea.pile import pile_scattered_excitation
 from boatland.waves.diffraction import cylinder_field
 from _timing import best_of, cpu_name
 

@@ -11,7 +11,7 @@ from _timing import best_of
 import platform
 
 from boatland.hydro.builtin import load_builtin
-from boatland.model.radiation import radiation_memory
+from boatland.vessel.radiation import radiation_memory
 
 
 

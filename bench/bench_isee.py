@@ -25,6 +25,7 @@ from pathlib import Path
 
 import h5py
 import numpy as np
+from boatland.landing.setup import landing_setup
 
 REPO = Path(__file__).resolve().parents[1]
 BASE = REPO / "scenarios" / "ctv24_landing.toml"   # the figures' vessel (ctv24, 80 kN)
@@ -51,11 +52,11 @@ def run_cli(camp: Path, store: Path, *extra) -> float:
 def brute_force_time(camp: Path, hs: float, n: int = 40) -> float:
     """Wall seconds per plain time-domain trial on all cores (the brute force's unit cost)."""
     from boatland.campaign.isee import SampleSpec, execute_sample
-    from boatland.campaign.pool import Pool
-    from boatland.scenario_check import load, resolve_database
+    from boatland.campaign.executor import Executor
+    from boatland.checks.files import load, resolve_database
 
     loaders = (load, resolve_database)
-    with Pool("local", os.cpu_count()) as pool:
+    with Executor("local", os.cpu_count()) as pool:
         list(pool.map(execute_sample, [(str(camp), SampleSpec(k, 0, 0, hs, k), loaders, True) for k in range(4)]))
         t0 = time.perf_counter()
         rows = list(pool.map(execute_sample, [(str(camp), SampleSpec(k, 0, 0, hs, k), loaders, True)
@@ -143,9 +144,10 @@ def _linear(hs, rel, access, directions, kappa=0.3, n=400, tp=7.0, gamma=3.3):
     """Linear-model ISEE estimates (no time domain) of the default landing."""
     from boatland.freqdomain.isee import draw, estimate
     from boatland.freqdomain.margins import landed_margins
-    from boatland.freqdomain.screening import LandingSetup, sea_response
-    from boatland.model.gaussian_sea import GaussianSea
-    from boatland.scenario_check import load, resolve_database
+    from boatland.freqdomain.landing import LandingSetup
+    from boatland.freqdomain.screening import sea_response
+    from boatland.sea.gaussian import GaussianSea
+    from boatland.checks.files import load, resolve_database
     from boatland.trial.simulate import exposure_start
 
     with warnings.catch_warnings():
@@ -153,8 +155,9 @@ def _linear(hs, rel, access, directions, kappa=0.3, n=400, tp=7.0, gamma=3.3):
         sc = load(BASE).replace({"sea.Hs": hs, "sea.relative_direction_deg": rel, "sea.Tp": tp, "sea.gamma": gamma})
         sc = sc.replace({"simulation.duration": exposure_start(sc) + 30.0 + access})
         db = resolve_database(sc)
-        dt, nst = sc.time_step(db), sc.n_steps(db)
-        g = GaussianSea(sea=sc.wave_model(db), dt=dt, n_steps=nst)
+        setup = landing_setup(sc, db)
+        dt, nst = setup.dt, setup.n_steps
+        g = GaussianSea(sea=setup.waves, dt=dt, n_steps=nst)
         setup = LandingSetup.from_scenario(sc, db)
         x0, y0, _ = sc.start_pose()
         lm = landed_margins(db, setup, g, x0=x0, y0=y0, first_step=int(math.ceil((exposure_start(sc) + 30) / dt - 1e-9)),

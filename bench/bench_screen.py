@@ -16,7 +16,7 @@ import warnings
 import numpy as np
 
 from boatland.freqdomain import LandingSetup, limiting_hs, screening_grid, slip_transfer, spectral_moments
-from boatland.scenario_check import default_scenario_path, load_checked
+from boatland.checks.files import default_scenario_path, load_checked
 from _timing import best_of, cpu_name
 
 

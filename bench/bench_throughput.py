@@ -16,7 +16,7 @@ each access. Steps are every step a trial integrates (settling and ramp included
    *kernel*: :meth:`MotionArrays.run` on the trial's own inputs (as :func:`simulate` makes them: the
    excitation with the pile's scattered wave, the wave ramp, thrust, contacts); *trial*: what a campaign
    worker does per trial — :func:`boatland.campaign.runner.execute_trial` with its case's
-   :class:`CaseData` (scenario, waves, kernel, events, episodes, summary row).
+   :class:`boatland.campaign.prepare.CaseData` (scenario, waves, kernel, events, episodes, summary row).
 2. **Where a 10,000-s trial's time goes**: cProfile of one ``execute_trial`` (the largest access asked).
 3. **Campaigns**: the ``boatland campaign`` CLI in a subprocess (start-up, imports, checks, the
    once-per-campaign preparation, workers, store, screening, statistics — end to end) on 1 and 2 local
@@ -52,6 +52,7 @@ from pathlib import Path
 import numpy as np
 
 from _timing import cpu_name
+from boatland.landing.setup import landing_setup
 
 REPO = Path(__file__).resolve().parents[1]
 STUDY = REPO / "scenarios" / "campaigns" / "table414.toml"
@@ -69,25 +70,26 @@ def study_file(tmp: Path, access: float, seeds: int = 8) -> Path:
 
 
 def load():
-    from boatland.scenario_check import load as load_scenario, resolve_database
+    from boatland.checks.files import load as load_scenario, resolve_database
 
     return load_scenario, resolve_database
 
 
 def kernel_inputs(scenario, db, arrays):
     """The kernel call of :func:`boatland.trial.simulate.simulate` for this scenario (same inputs)."""
-    from boatland.trial.simulate import LIMIT_ROT, LIMIT_TRANS, contact_arrays, thrust_series, wave_ramp
+    from boatland.landing.setup import landing_setup
+    from boatland.trial.simulate import LIMIT_ROT, LIMIT_TRANS, thrust_series, wave_ramp
 
-    dt, n = scenario.time_step(db), scenario.n_steps(db)
+    setup = landing_setup(scenario, db)
+    dt, n = setup.dt, setup.n_steps
     x0, y0, psi = scenario.start_pose()
-    F = scenario.wave_model(db).excitation(db, seed=scenario.simulation.seed, dt=dt, n_steps=n, x0=x0, y0=y0,
-                                           heading_deg=float(np.degrees(psi)), ramp_time=0.0,
-                                           pile=scenario.pile(db))
+    F = setup.waves.excitation(db, seed=scenario.simulation.seed, dt=dt, n_steps=n, x0=x0, y0=y0,
+                               heading_deg=float(np.degrees(psi)), ramp_time=0.0, pile=setup.pile)
     F *= wave_ramp(scenario, dt, n)[:, None]
-    Bv, Bq = scenario.additional_damping(db)
+    Bv, Bq = setup.additional_damping()
     kw = dict(F_ext=F, thrust=thrust_series(scenario, dt, n), r_p=scenario.thrust.position,
               x0=scenario.initial.displacement, v0=scenario.initial.velocity, Bv=np.diag(Bv), Bq=np.diag(Bq),
-              contacts=contact_arrays(scenario, db), limit_trans=LIMIT_TRANS, limit_rot=LIMIT_ROT)
+              contacts=setup.contacts(), limit_trans=LIMIT_TRANS, limit_rot=LIMIT_ROT)
     return lambda: arrays.run(dt, n, **kw), n
 
 
@@ -101,7 +103,8 @@ def timed(fn):
 def per_trial(path: Path, rounds: int):
     """Kernel-only and full-trial (wall, CPU, steps) over the first seed of every case; best per case."""
     from boatland.campaign.plan import load_campaign
-    from boatland.campaign.runner import check_cases, execute_trial, prepare_cases
+    from boatland.campaign.prepare import check_cases, prepare_cases
+    from boatland.campaign.runner import execute_trial
 
     loaders = load()
     campaign = load_campaign(path, load_scenario=loaders[0])
@@ -166,12 +169,12 @@ def profile_trial(source, spec, loaders, shared):
         return sum(v[3] for (f, _, nm), v in stats.items() if nm == name and file_part in f)
 
     parts = [("kernel (run_cummins)", cum("integrate/cummins", "run_cummins")),
-             ("wave excitation (NUFFT, pile tables looked up)", cum("model/seastate", "excitation")),
+             ("wave excitation (NUFFT, pile tables looked up)", cum("sea/states", "excitation")),
              ("events + slip episodes", cum("trial/events", "extract_events") + cum("trial/events", "slip_episodes")),
-             ("summary row (incidents, offsets)", cum("campaign/runner", "_summary_row")),
+             ("summary row (incidents, offsets)", cum("campaign/runner", "summary_row")),
              ("scenario of the trial (validated)", cum("campaign/plan", "scenario_for")),
              ("thrust, ramp, contacts", cum("trial/simulate", "thrust_series") + cum("trial/simulate", "wave_ramp")
-              + cum("trial/simulate", "contact_arrays"))]
+              + cum("landing/setup", "contacts"))]
     parts.append(("rest", total - sum(p for _, p in parts)))
     return total, parts
 
@@ -271,7 +274,7 @@ def main() -> None:
             path = study_file(tmp, access, args.seeds)
             c = load_campaign(path, load_scenario=load()[0])
             db = load()[1](c.base)
-            steps = sum(c.scenario_for(s).n_steps(db) for s in c.trials())
+            steps = sum(landing_setup(c.scenario_for(s), db).n_steps for s in c.trials())
             for workers in args.workers:
                 for row, (label, code) in enumerate([lc for _ in range(args.repeat) for lc in codes]):
                     load0 = load_text()

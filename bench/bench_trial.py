@@ -24,10 +24,10 @@ import time
 
 import numpy as np
 
-from boatland.model.motion import compile_motion
-from boatland.scenario_check import default_scenario_path, load_checked
-from boatland.trial.simulate import (LIMIT_ROT, LIMIT_TRANS, contact_arrays, prepare_memory, simulate,
-                                     thrust_series, wave_ramp)
+from boatland.checks.files import default_scenario_path, load_checked
+from boatland.landing.setup import landing_setup
+from boatland.trial.motion import compile_motion
+from boatland.trial.simulate import LIMIT_ROT, LIMIT_TRANS, simulate, thrust_series, wave_ramp
 
 ROUNDS = 12
 IRF_MEMORY = 40.0  # [s] ctv24's IRF has not decayed by 30 s (6 % left in yaw): shorter memories truncate it
@@ -35,15 +35,16 @@ IRF_MEMORY = 40.0  # [s] ctv24's IRF has not decayed by 30 s (6 % left in yaw): 
 
 def trial_inputs(sc, db, memory):
     """Kernel arrays and keyword arguments of the scenario's trial, waves included (as ``simulate``)."""
-    dt, n = sc.time_step(db), sc.n_steps(db)
+    setup = landing_setup(sc, db)
+    dt, n = setup.dt, setup.n_steps
     arr = compile_motion(db, memory, dt, method=sc.radiation.method, memory_length=sc.radiation.memory)
     x0, y0, psi = sc.start_pose()
-    F = sc.wave_model(db).excitation(db, seed=sc.simulation.seed, dt=dt, n_steps=n, x0=x0, y0=y0,
-                                     heading_deg=float(np.degrees(psi)), ramp_time=0.0)
+    F = setup.waves.excitation(db, seed=sc.simulation.seed, dt=dt, n_steps=n, x0=x0, y0=y0,
+                               heading_deg=float(np.degrees(psi)), ramp_time=0.0)
     F *= wave_ramp(sc, dt, n)[:, None]
-    Bv, Bq = sc.additional_damping(db)
+    Bv, Bq = setup.additional_damping()
     kw = dict(F_ext=F, thrust=thrust_series(sc, dt, n), r_p=sc.thrust.position, x0=sc.initial.displacement,
-              v0=sc.initial.velocity, Bv=np.diag(Bv), Bq=np.diag(Bq), contacts=contact_arrays(sc, db),
+              v0=sc.initial.velocity, Bv=np.diag(Bv), Bq=np.diag(Bq), contacts=setup.contacts(),
               limit_trans=LIMIT_TRANS, limit_rot=LIMIT_ROT)
     return arr, dt, n, kw
 
@@ -57,7 +58,7 @@ def radiation(sc, db, method, memory):
     sc = sc.replace({"radiation.method": method, "radiation.memory": memory})
     key = (method, max(memory, IRF_MEMORY))
     if key not in _MEMORIES:
-        _MEMORIES[key] = prepare_memory(sc.replace({"radiation.memory": key[1]}), db)
+        _MEMORIES[key] = landing_setup(sc.replace({"radiation.memory": key[1]}), db).memory()
     return sc, _MEMORIES[key]
 
 
@@ -95,7 +96,7 @@ def main():
     scenario, db, _ = load_checked(default_scenario_path())
     T = scenario.simulation.duration
     print(f"# {platform.machine()}, Python {platform.python_version()}, numba {numba.__version__}, "
-          f"{scenario.name}: {T:g} s at dt = {scenario.time_step(db):g} s, one core, best of {ROUNDS}\n")
+          f"{scenario.name}: {T:g} s at dt = {landing_setup(scenario, db).dt:g} s, one core, best of {ROUNDS}\n")
     default, by_memory, by_contacts, sims = {}, {}, {}, {}
     for method, memory in (("convolution", 30.0), ("convolution", 40.0), ("state_space", 40.0)):
         sims[method, memory] = radiation(scenario, db, method, memory)

@@ -13,14 +13,25 @@ Exported (imported on first use, so ``import boatland`` stays light): :func:`sim
 :func:`load_scenario` (:mod:`boatland.api`), :func:`open_store` (:mod:`boatland.campaign.dataset`),
 :class:`Result` (:mod:`boatland.trial.result`), :func:`load_builtin` (the built-in vessel databases).
 
-Layers (each imports only from those below it; checked by import-linter in CI):
+Rooms, in layers (each imports only from those below it; checked by import-linter in CI and by
+``tests/test_architecture.py``):
 
-1. kernels: :mod:`boatland.irf`, :mod:`boatland.contact`, :mod:`boatland.integrate`, :mod:`boatland.waves`
-2. model: :mod:`boatland.model` (validated, immutable data: hydrodynamic database, vessel, ...)
-3. services: one trial (:mod:`boatland.trial`), frequency domain (:mod:`boatland.freqdomain`),
-   campaigns (:mod:`boatland.campaign`)
-4. edges: :mod:`boatland.hydro` (BEM readers / writers / builder), :mod:`boatland.record`,
-   :mod:`boatland.api` (the notebook API), :mod:`boatland.cli`
+1. kernels — plain numba functions on arrays: :mod:`boatland.irf` (radiation IRFs, state-space fit),
+   :mod:`boatland.contact` (the fender), :mod:`boatland.waves` (spectra, synthesis, diffraction),
+   :mod:`boatland.integrate` (the RK4 Cummins stepper; its tableau :mod:`boatland.rk4`);
+2. the middle floor — validated, immutable data named after what it holds: :mod:`boatland.vessel` (the
+   hydrodynamic database, its directions and radiation memory, vessel files, hull lines),
+   :mod:`boatland.hydro` (BEM readers, the BEMIO writer, the Capytaine builder, the built-in vessels),
+   :mod:`boatland.sea` (spectral parts, sea states, the pile's scattered wave), :mod:`boatland.scenario`
+   (the file format), :mod:`boatland.landing` (the scenario on its vessel: one :class:`Setup`),
+   :mod:`boatland.checks` (everything that refuses or warns before a run);
+3. services: one trial (:mod:`boatland.trial`; its incident definitions :mod:`boatland.trial.incidents`),
+   frequency domain (:mod:`boatland.freqdomain`), campaigns (:mod:`boatland.campaign`);
+4. edges: :mod:`boatland.record` (MCAP, Rerun, replay, figures), :mod:`boatland.api` (the notebook API),
+   :mod:`boatland.validation`, :mod:`boatland.cli`.
+
+``boatland.model`` (the names of the middle floor before the redesign) still imports, with a deprecation
+warning, for one release.
 """
 
 __version__ = "0.1.0"

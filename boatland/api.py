@@ -24,7 +24,7 @@ def scenario_path(name: str | Path | None = None) -> Path:
     """A scenario file: a path, or the name of one shipped in ``scenarios/`` (``"ctv_landing"``,
     ``"model2_j03"``); None: the default trial (``scenarios/ctv_landing.toml``)."""
     from boatland.errors import BoatlandInputError
-    from boatland.scenario_check import default_scenario_path
+    from boatland.checks.files import default_scenario_path
 
     if name is None:
         return default_scenario_path()
@@ -50,7 +50,7 @@ def _changes(changes: Mapping[str, Any] | None, overrides: dict) -> dict:
 
 
 def load_scenario(scenario=None, *, changes: Mapping[str, Any] | None = None, **overrides):
-    """A validated :class:`~boatland.model.scenario.Scenario`, with changes.
+    """A validated :class:`~boatland.scenario.scenario.Scenario`, with changes.
 
     Parameters
     ----------
@@ -64,11 +64,11 @@ def load_scenario(scenario=None, *, changes: Mapping[str, Any] | None = None, **
 
     Raises
     ------
-    boatland.model.tomlspec.SpecError
+    boatland.tomlspec.SpecError
         Every problem of the file and the changes, with its key path.
     """
-    from boatland.model.scenario import Scenario
-    from boatland.scenario_check import load
+    from boatland.scenario.scenario import Scenario
+    from boatland.checks.files import load
 
     sc = scenario if isinstance(scenario, Scenario) else load(scenario_path(scenario))
     todo = _changes(changes, overrides)
@@ -99,7 +99,7 @@ def simulate(scenario=None, *, changes: Mapping[str, Any] | None = None, log: st
 
     Raises
     ------
-    boatland.model.tomlspec.SpecError
+    boatland.tomlspec.SpecError
         Problems of the scenario, its changes or its database (all at once, with key paths).
     boatland.trial.simulate.BlowUpError
         The integration stopped (NaN or runaway); its ``result`` holds the trial up to there.
@@ -107,9 +107,9 @@ def simulate(scenario=None, *, changes: Mapping[str, Any] | None = None, log: st
     Notes
     -----
     The scenario's checks against its database run first, as in ``boatland run``; their warnings are
-    issued as :class:`boatland.model.scenario.ScenarioWarning`.
+    issued as :class:`boatland.scenario.scenario.ScenarioWarning`.
     """
-    from boatland.scenario_check import check_loaded
+    from boatland.checks.files import check_loaded
     from boatland.trial.simulate import simulate as run
 
     sc = load_scenario(scenario, changes=changes, **overrides)

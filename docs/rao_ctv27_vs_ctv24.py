@@ -26,7 +26,7 @@ sys.path.insert(0, str(ROOT))
 
 from boatland.freqdomain import LandingSetup, free_rao  # noqa: E402
 from boatland.freqdomain.screening import landed_response  # noqa: E402
-from boatland.scenario_check import load_checked  # noqa: E402
+from boatland.checks.files import load_checked  # noqa: E402
 
 T = np.linspace(3.0, 15.0, 121)
 W = 2 * np.pi / T

@@ -7,7 +7,7 @@ import pytest
 
 import boatland
 from boatland.errors import BoatlandInputError
-from boatland.model.tomlspec import SpecError
+from boatland.tomlspec import SpecError
 
 
 def test_exports_are_lazy():
@@ -37,6 +37,7 @@ def test_problems_come_all_at_once_with_key_paths():
         boatland.load_scenario("no_such_scenario")
 
 
+@pytest.mark.slow
 def test_simulate_returns_a_result_with_verdict_and_dataset(tmp_path):
     r = boatland.simulate("ctv_landing", simulation__duration=40.0, **{"sea.Hs": 0.1}, log=tmp_path / "r.mcap")
     assert isinstance(r, boatland.Result)

@@ -21,7 +21,7 @@ def test_help_lists_commands():
 
 
 def test_irf_help_states_the_library_fit_defaults():
-    from boatland.model.radiation import MAX_ORDER, TARGET_R2
+    from boatland.vessel.radiation import MAX_ORDER, TARGET_R2
 
     r = run("irf", "--help")
     text = " ".join(r.stdout.split())
@@ -66,6 +66,7 @@ def test_import_failure_writes_nothing(tmp_path):
     assert not out.exists() and list(tmp_path.iterdir()) == [bad]
 
 
+@pytest.mark.slow
 def test_irf_stores_bemio_groups_and_plot(refdata, tmp_path):
     import h5py
 
@@ -96,6 +97,7 @@ def test_irf_bad_settings_exit_2(refdata, tmp_path):
 SCENARIOS = sorted((Path(__file__).resolve().parents[1] / "scenarios").glob("*.toml"))
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("scenario", SCENARIOS, ids=lambda p: p.stem)
 def test_every_shipped_scenario_runs_shortened(scenario, tmp_path):
     """Each scenario file checks clean and runs 30 s (after its thrust ramp) through the real CLI."""

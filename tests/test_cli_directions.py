@@ -53,6 +53,7 @@ def scenario(databases, tmp_path, db: str, direction: float) -> Path:
     return path
 
 
+@pytest.mark.slow
 def test_symmetric_half_database_is_completed(databases, tmp_path):
     r = run("scenario", "check", scenario(databases, tmp_path, "half", 225.0))
     assert r.returncode == 0, r.stdout + r.stderr
@@ -62,6 +63,7 @@ def test_symmetric_half_database_is_completed(databases, tmp_path):
     assert r.returncode == 0 and "coverage        completed to 360° by port–starboard symmetry" in r.stdout
 
 
+@pytest.mark.slow
 def test_asymmetric_half_database_refuses_outside(databases, tmp_path):
     bad = scenario(databases, tmp_path, "asym", 225.0)
     r = run("scenario", "check", bad)
@@ -80,6 +82,7 @@ def test_asymmetric_half_database_refuses_outside(databases, tmp_path):
                    "--directions 8 (every 45°): 225°, 270°, 315° are outside", "valid: 0–180°")
 
 
+@pytest.mark.slow
 def test_single_direction_database_refuses_others(databases, tmp_path):
     bad = scenario(databases, tmp_path, "one", 170.0)
     one_line_error(run("run", bad, "--duration", "5", "--no-log"),

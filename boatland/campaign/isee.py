@@ -10,7 +10,7 @@ densities (:mod:`boatland.freqdomain.isee`) and weights each sample by :math:`\b
 
 Per sample (:func:`execute_sample`): u drawn for the case's sea at the run's Hs; the linear model's
 indicators (:class:`~boatland.freqdomain.margins.Indicators`); and the **full time-domain trial on
-exactly that sea** (:class:`~boatland.model.gaussian_sea.GaussianSea` handed to
+exactly that sea** (:class:`~boatland.sea.gaussian.GaussianSea` handed to
 :func:`~boatland.trial.simulate.simulate`), whose incidents — first slip, slip distance, roll after a
 slip, contact loss — are what is estimated: :math:`\hat P(G) = \bar P\,\overline{1_G/N}` is unbiased for
 every incident G inside the sampling domain D. D is the inscribed M-gon of the friction circle with a
@@ -63,18 +63,25 @@ import numpy as np
 from scipy.special import ndtri
 
 from boatland.campaign.plan import Campaign
-from boatland.campaign.runner import _context, check_cases, incident_names
+from boatland.campaign.executor import Executor, check_scheduler_address
+from boatland.campaign.plan import plan_json
+from boatland.campaign.prepare import check_cases, worker_context
+from boatland.campaign.runner import completed, incident_names, summary_row
 from boatland.campaign.store import INCIDENT_PREFIX, CampaignStore
 from boatland.errors import BoatlandInputError
 from boatland.freqdomain.isee import IseeEstimate, draw, estimate
 from boatland.freqdomain.margins import LandedMargins, landed_margins
-from boatland.freqdomain.screening import (LandingSetup, distinct_events, incident_probability, response_correlation,
-                                           slip_transfer, spectral_moments)
-from boatland.freqdomain.screening import limiting_hs as fd_limiting_hs
-from boatland.model.gaussian_sea import GaussianSea
-from boatland.model.seastate import SeaState
+from boatland.freqdomain.landing import LandingSetup
+from boatland.freqdomain.screening import slip_transfer
+from boatland.freqdomain.statistics import (distinct_events, incident_probability, response_correlation,
+                                            spectral_moments)
+from boatland.freqdomain.statistics import limiting_hs as fd_limiting_hs
+from boatland.landing.setup import Setup, landing_setup
+from boatland.sea.gaussian import GaussianSea
+from boatland.sea.spectra import SHAPES
+from boatland.sea.states import SeaState
 from boatland.reproducible import single_threaded
-from boatland.trial.events import first_exceedance
+from boatland.trial.incidents import parse_incident
 from boatland.trial.simulate import exposure_start
 
 __all__ = ["ISEE_FIELDS", "ISEE_KEY", "LevelModel", "SampleSpec", "access_incidents", "execute_sample",
@@ -149,12 +156,13 @@ def level_scenario(campaign: Campaign, case: int, hs: float | None):
 @dataclass(frozen=True, eq=False)
 class LevelModel:
     """What the samples of one run share: the scenario at the run's Hs, the sea's grid, the linear
-    margins and the access start ``t_access`` [s]."""
+    margins and the access start ``t_access`` [s]; ``setup`` the scenario on its vessel."""
 
     scenario: object
     sea: GaussianSea
     margins: LandedMargins
     t_access: float
+    setup: Setup
 
 
 def level_model(campaign: Campaign, case: int, hs: float | None, db, reference: LandedMargins | None = None,
@@ -162,21 +170,23 @@ def level_model(campaign: Campaign, case: int, hs: float | None, db, reference: 
     """The :class:`LevelModel` of ``case`` at ``hs``; with a ``reference`` model of the same case at
     ``hs_reference`` its margins are scaled (:meth:`LandedMargins.scaled`) instead of solved again."""
     sc = level_scenario(campaign, case, hs)
-    waves = sc.wave_model(db)
+    setup = landing_setup(sc, db)
+    waves = setup.waves
     if not isinstance(waves, SeaState):
-        raise BoatlandInputError(f"{campaign.source}: method isee needs a spectral sea (JONSWAP, PM, TMA parts); "
+        raise BoatlandInputError(f"{campaign.source}: method isee needs a spectral sea (spectral parts: "
+                                 f"{', '.join(s.label for s in SHAPES.values())}); "
                                  f"case {case} has {type(waves).__name__}")
-    dt, n = sc.time_step(db), sc.n_steps(db)
+    dt, n = setup.dt, setup.n_steps
     sea = GaussianSea(sea=waves, dt=dt, n_steps=n)
     t_a = exposure_start(sc) + campaign.isee.settle
     if reference is not None and hs_reference is not None and hs is not None:
         margins = reference.scaled(hs / hs_reference)
     else:
-        setup = LandingSetup.from_scenario(sc, db)
-        x0, y0, _ = sc.start_pose()
-        margins = landed_margins(db, setup, sea, x0=x0, y0=y0, first_step=int(math.ceil(t_a / dt - 1e-9)),
+        landing = LandingSetup.from_scenario(sc, db, setup=setup)
+        x0, y0, _ = setup.start_pose
+        margins = landed_margins(db, landing, sea, x0=x0, y0=y0, first_step=int(math.ceil(t_a / dt - 1e-9)),
                                  kappa=campaign.isee.kappa, directions=campaign.isee.directions)
-    return LevelModel(scenario=sc, sea=sea, margins=margins, t_access=float(margins.steps[0] * dt))
+    return LevelModel(scenario=sc, sea=sea, margins=margins, t_access=float(margins.steps[0] * dt), setup=setup)
 
 
 def _case_hs(campaign: Campaign, case: int) -> float | None:
@@ -214,31 +224,12 @@ def _models(ctx: dict, campaign: Campaign, case: int, hs: float, loaders) -> Lev
 # ------------------------------------------------------------------------------------ one sample
 def access_incidents(result, t_access: float, names) -> dict[str, float]:
     """Time [s] from the access start of each incident definition's first occurrence in the access
-    (NaN: none): the first stick→slip at or after ``t_access``; slip distance or roll beyond its limit at
-    some step from ``t_access`` on; contact lost (or slid off the landing) from ``t_access`` on — or
-    before it, if the trial ended there."""
-    t = result.t
-    k0 = int(np.searchsorted(t, t_access - 1e-9))
+    (NaN: none; :meth:`boatland.trial.incidents.Incident.in_access`): the first stick→slip at or after
+    ``t_access``; slip distance or roll beyond its limit at some step from ``t_access`` on; contact lost
+    (or slid off the landing) from ``t_access`` on — or before it, if the trial ended there."""
     out: dict[str, float] = {}
-    slips = [e.t for e in result.slip_events() if e.t >= t_access - 1e-9]
-    worst = None
-    if result.mode.shape[1]:
-        off = result.landing_offset()
-        worst = np.where(np.isnan(off), 0.0, off).max(axis=1)
     for name in names:
-        v = None
-        if name == "first slip":
-            v = slips[0] if slips else None
-        elif name.startswith("slip > "):
-            d = float(name[7:].split()[0])
-            v = first_exceedance(t[k0:], worst[k0:], d) if worst is not None and k0 < t.size else None
-        elif name.startswith("roll > "):
-            r = float(name[7:].rstrip("°"))
-            v = first_exceedance(t[k0:], result.x[k0:, 3], math.radians(r)) if k0 < t.size else None
-        elif name == "contact loss":
-            lost = [e.t for e in result.events if e.kind in ("contact lost", "slid off the landing")]
-            after = [x for x in lost if x >= t_access - 1e-9]
-            v = after[0] if after else (t_access if lost and t[-1] < t_access else None)
+        v = parse_incident(name).in_access(result, t_access)
         out[name] = math.nan if v is None else max(0.0, float(v) - t_access)
     return out
 
@@ -256,14 +247,15 @@ def execute_sample(source: str, spec: SampleSpec, loaders, plain: bool = False) 
     the estimator is checked against): ``isee_event`` −1, ``isee_log_pbar`` NaN, ``isee_n`` the elementary
     events of D it exceeds (0 if none: then the linear model sees no slip, and a time-domain incident there
     would lie outside the sampling domain)."""
-    from boatland.trial.simulate import BlowUpError, check_radiation, prepare_memory, simulate
+    from boatland.checks.memory import check_radiation
+    from boatland.trial.simulate import BlowUpError, simulate
 
     wall0 = time.perf_counter()
     row = {"trial": spec.trial, "case": spec.case, "seed_index": spec.sample, "level": spec.level, "hs": spec.hs}
     ss = sample_seed(0, 0, 0, 0)
     with single_threaded():
         try:
-            ctx = _context(source, loaders)
+            ctx = worker_context(source, loaders)
             campaign: Campaign = ctx["campaign"]
             names = incident_names(campaign)
             ss = sample_seed(campaign.master_seed, spec.case, spec.level, spec.sample, plain)
@@ -290,13 +282,14 @@ def execute_sample(source: str, spec: SampleSpec, loaders, plain: bool = False) 
                 db = ctx["db"][dbkey]
                 rad = sc.radiation
                 mkey = (dbkey, rad.method, rad.memory, rad.tail, rad.taper)
+                setup = model.setup if model.setup.db is db else landing_setup(sc, db)
                 if mkey not in ctx["memory"]:
-                    ctx["memory"][mkey] = prepare_memory(sc, db)
+                    ctx["memory"][mkey] = setup.memory()
                 if spec.case not in ctx["checked"]:
-                    check_radiation(sc, db, ctx["memory"][mkey], sc.time_step(db))
+                    check_radiation(setup, ctx["memory"][mkey])
                     ctx["checked"].add(spec.case)
                 try:
-                    result = simulate(sc, db, memory=ctx["memory"][mkey], waves=model.sea.with_u(u))
+                    result = simulate(sc, db, memory=ctx["memory"][mkey], waves=model.sea.with_u(u), setup=setup)
                 except BlowUpError as exc:
                     result = exc.result
             row.update(_sample_row(result, model.t_access, names))
@@ -311,9 +304,8 @@ def execute_sample(source: str, spec: SampleSpec, loaders, plain: bool = False) 
 
 
 def _sample_row(result, t_access: float, names) -> dict:
-    from boatland.campaign.runner import _summary_row
 
-    row = _summary_row(result, t_access, result.t[-1], names)
+    row = summary_row(result, t_access, result.t[-1], names)
     times = access_incidents(result, t_access, names)
     for name in names:
         row[INCIDENT_PREFIX + name] = times[name]
@@ -339,7 +331,6 @@ def run_estimates(rows: np.ndarray, names, confidence: float = CONFIDENCE) -> di
 
 
 def _completed(rows: np.ndarray) -> np.ndarray:
-    from boatland.campaign.runner import completed
 
     return rows[completed(rows)] if rows.size else rows
 
@@ -487,8 +478,6 @@ def run_isee(campaign: Campaign, store_path: str | Path, *, loaders, executor: s
     CampaignStore
         Finished: every sample's row, ``/stats`` (one row per run) and ``/isee_limits`` (with ``accept``).
     """
-    from boatland.campaign.pool import Pool
-    from boatland.campaign.runner import _plan_json
 
     s = campaign.isee
     names = incident_names(campaign)
@@ -501,19 +490,17 @@ def run_isee(campaign: Campaign, store_path: str | Path, *, loaders, executor: s
     header = {
         "campaign": campaign.name, "campaign_digest": campaign.digest(),
         "campaign_file": Path(campaign.source).read_text(encoding="utf-8"),
-        "plan": _plan_json(campaign), "n_trials": len(campaign.cases) * MAX_LEVELS * MAX_SAMPLES,
+        "plan": plan_json(campaign), "n_trials": len(campaign.cases) * MAX_LEVELS * MAX_SAMPLES,
         "incidents": "\n".join(names), "method": "isee", "isee": json.dumps(asdict(s)),
     }
     if executor == "dask":
-        from boatland.campaign.runner import _check_scheduler_address
-
-        _check_scheduler_address(scheduler)
+        check_scheduler_address(scheduler)
     check_cases(campaign, loaders[1])
     store = CampaignStore.open(store_path, header, names, ISEE_FIELDS)
     source = str(Path(campaign.source).resolve())
     try:
         with single_threaded():      # prepared here before the workers fork: they inherit it
-            ctx = _context(source, loaders)
+            ctx = worker_context(source, loaders)
             ctx["campaign"] = campaign
             refs = {c.index: _models(ctx, campaign, c.index, _case_hs(campaign, c.index) or 0.0, loaders)
                     for c in campaign.cases}
@@ -527,7 +514,7 @@ def run_isee(campaign: Campaign, store_path: str | Path, *, loaders, executor: s
                 levels[c] = [_Level(_first_level(curves[c], s.accept, _case_hs(campaign, c)))]
             else:
                 levels[c] = [_Level(_case_hs(campaign, c) or 0.0)]
-        with Pool(executor, workers, scheduler, connect_timeout) as pool:
+        with Executor(executor, workers, scheduler, connect_timeout) as pool:
             while True:
                 table = store.table()
                 tasks = []
@@ -650,7 +637,7 @@ def _fd_case(campaign, c, loaders, dbs):
     """The screening's view of case ``c``, cached: (spectral moments for Hs = 1 (1, 1, R, 3), capacities, Tp,
     relative direction, access, the margins that are events of their own) — one long-crested spectral part
     only (else None). Margins correlated at ρ ≥ 0.99 (the two contacts' in head seas) count once, as in
-    ``boatland screen`` (:func:`boatland.freqdomain.screening.distinct_events`)."""
+    ``boatland screen`` (:func:`boatland.freqdomain.statistics.distinct_events`)."""
     key = ("fd", c)
     if key not in dbs:
         dbs[key] = None
@@ -662,13 +649,14 @@ def _fd_case(campaign, c, loaders, dbs):
                 if dkey not in dbs:
                     dbs[dkey] = loaders[1](sc)
                 db = dbs[dkey]
-                setup = LandingSetup.from_scenario(sc, db)
+                setup = landing_setup(sc, db)
+                landing = LandingSetup.from_scenario(sc, db, setup=setup)
                 parts = sc.sea.waves.parts
                 if len(parts) == 1 and parts[0].spreading is None:
                     p = parts[0]
-                    beta = (p.direction_deg - setup.heading_deg) % 360.0
-                    tr = slip_transfer(db, setup, beta_deg=[beta])
-                    h = sc.wave_model(db).water_depth
+                    beta = (p.direction_deg - landing.heading_deg) % 360.0
+                    tr = slip_transfer(db, landing, beta_deg=[beta])
+                    h = setup.waves.water_depth
                     m, _ = spectral_moments(tr, [p.Tp], sea=p, water_depth=h, g=db.g)
                     keep = distinct_events(m[..., 0], tr.capacity,
                                            response_correlation(tr, [p.Tp], sea=p, water_depth=h, g=db.g))
@@ -684,7 +672,7 @@ def _access(campaign, sc) -> float:
 
 def _screening_p(campaign, c, hs, statistics, loaders, dbs) -> float:
     """The frequency-domain screening's P(slip or roll within the access) of the run at ``hs`` (four
-    margins per contact at μ, Grøtting 2015 §3.2.1, :func:`boatland.freqdomain.screening.incident_probability`)."""
+    margins per contact at μ, Grøtting 2015 §3.2.1, :func:`boatland.freqdomain.statistics.incident_probability`)."""
     fd = _fd_case(campaign, c, loaders, dbs)
     if fd is None or hs is None:
         return math.nan
@@ -694,7 +682,7 @@ def _screening_p(campaign, c, hs, statistics, loaders, dbs) -> float:
 
 
 def _screening_limit(campaign, c, statistics, loaders, dbs) -> float:
-    """The screening's limiting Hs of the case at ``accept`` (:func:`boatland.freqdomain.screening.limiting_hs`)."""
+    """The screening's limiting Hs of the case at ``accept`` (:func:`boatland.freqdomain.statistics.limiting_hs`)."""
     fd = _fd_case(campaign, c, loaders, dbs)
     if fd is None:
         return math.nan
@@ -719,7 +707,7 @@ def worst_samples(table: np.ndarray, incident: str, n: int) -> list[int]:
 def rerun_sample(campaign: Campaign, row, loaders, sinks=()):
     """Run the sample of a store ``row`` (its case, level, Hs, sample number) again, exactly, with ``sinks``
     (e.g. a run log): the same u from the same seed, the same sea, the same trial. Returns the Result."""
-    from boatland.trial.simulate import BlowUpError, prepare_memory, simulate
+    from boatland.trial.simulate import BlowUpError, simulate
 
     ctx = {"db": {}, "memory": {}, "checked": set(), "campaign": campaign}
     with single_threaded():
@@ -730,12 +718,11 @@ def rerun_sample(campaign: Campaign, row, loaders, sinks=()):
         if e != int(row["isee_event"]):
             raise BoatlandInputError(f"sample {int(row['trial'])}: drawn again it is not the stored one (event {e} ≠ "
                                      f"{int(row['isee_event'])}): inputs changed since the campaign ran")
-        sc = model.scenario
-        db = next(iter(ctx["db"].values()))
+        sc, setup = model.scenario, model.setup
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            memory = prepare_memory(sc, db)
             try:
-                return simulate(sc, db, memory=memory, waves=model.sea.with_u(u), sinks=sinks)
+                return simulate(sc, setup.db, memory=setup.memory(), waves=model.sea.with_u(u), sinks=sinks,
+                                setup=setup)
             except BlowUpError as exc:
                 return exc.result

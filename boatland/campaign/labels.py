@@ -10,7 +10,7 @@ from __future__ import annotations
 import json
 import re
 
-from boatland.trial.inputs import heading_name, trial_inputs
+from boatland.scenario.inputs import heading_name, trial_inputs
 
 __all__ = ["AXES", "axis_name", "axis_label", "axis_unit", "value_text", "campaign_inputs", "fixed_text",
            "HS_KEY", "TP_KEYS", "DIR_KEYS"]
@@ -78,7 +78,7 @@ def value_text(key: str, value, *, short: bool = False) -> str:
 
 
 def campaign_inputs(campaign) -> dict:
-    """What a campaign holds fixed: the base scenario's :func:`~boatland.trial.inputs.trial_inputs`
+    """What a campaign holds fixed: the base scenario's :func:`~boatland.scenario.inputs.trial_inputs`
     (with the campaign's ``[set]``), the seeds per case, the access [s], name and description."""
     from boatland.trial.simulate import exposure_start
 

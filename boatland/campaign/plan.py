@@ -46,13 +46,15 @@ from typing import Any
 
 import numpy as np
 
+from boatland import __version__
 from boatland.errors import BoatlandInputError
-from boatland.model.imported import database_files
-from boatland.model.scenario import Scenario
-from boatland.model.tomlspec import Key, Problems, SpecError, Table, Vector, parse_toml_file, validate
+from boatland.vessel.imported import database_files
+from boatland.scenario.scenario import Scenario
+from boatland.scenario.schema import SCENARIO_SCHEMA
+from boatland.tomlspec import Key, Problems, SpecError, Table, Vector, parse_toml_file, validate
 from boatland.trial.simulate import exposure_start
 
-__all__ = ["Campaign", "Case", "IseeSettings", "TrialSpec", "load_campaign", "trial_seed", "file_sha256",
+__all__ = ["Campaign", "Case", "IseeSettings", "TrialSpec", "load_campaign", "plan_json", "trial_seed", "file_sha256",
            "CAMPAIGN_SCHEMA", "METHODS"]
 
 #: How a campaign estimates its probabilities: N wave seeds per case, or importance sampling of the
@@ -88,10 +90,7 @@ CAMPAIGN_SCHEMA = Table({
                                               "runs its settling and wave ramp first, then this long"),
     "set": Table({}, optional=True, doc="fixed changes to the base scenario: key path → value"),
     "axes": Table({}, optional=True, doc="swept key paths → lists of values"),
-    "incidents": Table({
-        "slip_distance": Vector(scalar=True, gt=0.0, doc="[m] slip incident thresholds (distance from the landing position)"),
-        "roll_limit_deg": Vector(scalar=True, gt=0.0, doc="[deg] roll incident limits"),
-    }, optional=True),
+    "incidents": SCENARIO_SCHEMA.entries["incidents"].overrides(),   # the scenario's keys, replacing its values
     "store": Table({
         "keep_series": Vector(scalar=True, ge=0.0, doc="trial numbers whose full time series are stored"),
     }, optional=True),
@@ -297,10 +296,8 @@ def load_campaign(path: str | Path, *, load_scenario) -> Campaign:
     except SpecError as exc:
         raise SpecError(str(path), [("scenario", f"the base scenario has problems:\n{exc}")]) from None
     changes: dict[str, Any] = dict(raw_set)
-    inc = data.get("incidents") or {}
-    for key in ("slip_distance", "roll_limit_deg"):
-        if key in inc:
-            changes[f"incidents.{key}"] = [float(v) for v in np.atleast_1d(inc[key])]
+    for key, values in (data.get("incidents") or {}).items():
+        changes[f"incidents.{key}"] = [float(v) for v in np.atleast_1d(values)]
     base = _apply(scenario, changes, problems, "set")
     axes: dict[str, list] = {}
     for key, values in raw_axes.items():
@@ -331,7 +328,7 @@ def _isee_settings(d: dict, problems: Problems) -> IseeSettings:
     values = {k: v for k, v in d.items() if k in IseeSettings.__dataclass_fields__}
     accept = values.pop("accept", None)
     if accept is not None:
-        from boatland.freqdomain.screening import accept_probability
+        from boatland.freqdomain.statistics import accept_probability
 
         try:
             values["accept"] = accept_probability(accept)
@@ -353,3 +350,11 @@ def _apply(scenario: Scenario, changes: dict, problems: Problems, where: str) ->
     except (KeyError, ValueError, TypeError, IndexError) as exc:
         problems.add(where, f"{exc}")
     return None
+
+
+def plan_json(campaign: Campaign) -> str:
+    """The plan as JSON for a store's header: name, base scenario, seeds, axes, the cases' values, the
+    boatland version."""
+    return json.dumps({"name": campaign.name, "scenario": str(campaign.scenario_path), "seeds": campaign.seeds,
+                       "master_seed": campaign.master_seed, "axes": campaign.axes,
+                       "cases": [c.values for c in campaign.cases], "boatland": __version__}, default=str)

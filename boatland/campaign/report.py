@@ -40,6 +40,7 @@ from boatland.campaign.labels import DIR_KEYS, HS_KEY, axis_label, fixed_text, v
 from boatland.campaign.runner import completed
 from boatland.campaign.store import FORMAT, INCIDENT_PREFIX
 from boatland.errors import BoatlandInputError
+from boatland.trial.incidents import SlipDistance, parse_incident
 
 __all__ = ["read_store", "write_report", "store_decision", "default_incident", "REPORT_FILES",
            "figure_p_vs_hs", "figure_limiting_polar", "figure_time_to_incident"]
@@ -89,7 +90,7 @@ def read_store(path: str | Path) -> dict:
 
 def default_incident(names: list[str]) -> str:
     """The incident a report is about unless told: the first slip-distance definition, else the first."""
-    return next((n for n in names if n.startswith("slip >")), names[0])
+    return next((n for n in names if isinstance(parse_incident(n), SlipDistance)), names[0])
 
 
 def _incident(data: dict, incident: str | None) -> str:

@@ -47,13 +47,14 @@ def cmd(args) -> int:
     from boatland.campaign import load_campaign, run_campaign
     from boatland.campaign.report import REPORT_FILES, write_report
     from boatland.campaign.runner import check_cases, failures, start_background
-    from boatland.cli.common import check_memory
-    from boatland.scenario_check import load, resolve_database
+    from boatland.checks.files import load, resolve_database
+    from boatland.cli.common import check_fits_in_memory
+    from boatland.landing.setup import landing_setup
 
     if args.scheduler:
-        from boatland.campaign.runner import _check_scheduler_address
+        from boatland.campaign.executor import check_scheduler_address
 
-        _check_scheduler_address(args.scheduler)
+        check_scheduler_address(args.scheduler)
     import warnings
 
     with warnings.catch_warnings(record=True) as caught:     # shown as one line each once the file is good
@@ -85,8 +86,8 @@ def cmd(args) -> int:
             print(f"warning: {w}", file=sys.stderr)
         longest = max((campaign.scenario_for(campaign.trials()[c * campaign.seeds])
                        for c in range(len(campaign.cases))), key=lambda s: s.simulation.duration)
-        check_memory(longest, resolve_database(longest), flag=f"{args.campaign}: duration",
-                     copies=min(workers, campaign.n_trials))
+        check_fits_in_memory(landing_setup(longest, resolve_database(longest)), flag=f"{args.campaign}: duration",
+                             copies=min(workers, campaign.n_trials))
     except BaseException:
         if background is not None:
             background.close()
@@ -169,7 +170,7 @@ def _isee(args, campaign, store, where, worst_dir) -> int:
     from boatland.campaign.isee import run_isee
     from boatland.campaign.report import write_report
     from boatland.cli.common import compile_notice
-    from boatland.scenario_check import load, resolve_database
+    from boatland.checks.files import load, resolve_database
 
     s = campaign.isee
     with ExitStack() as stack:
@@ -239,7 +240,7 @@ def _save_worst(campaign, table, folder: Path, n: int, incident: str, quiet: boo
     """The ``n`` heaviest samples run again, exactly, each with its run log ``sample_<trial>.mcap``."""
     from boatland.campaign.isee import rerun_sample, worst_samples
     from boatland.record.mcap_log import McapLog
-    from boatland.scenario_check import load, resolve_database
+    from boatland.checks.files import load, resolve_database
 
     folder.mkdir(exist_ok=True)
     for trial in worst_samples(table, incident, n):

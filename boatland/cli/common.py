@@ -11,25 +11,18 @@ from boatland.cli.guard import in_range, positive
 from boatland.errors import BoatlandInputError
 
 __all__ = ["DEFAULT_VESSEL", "resolve_db", "scenario_argument", "screening_options", "freq_load", "freq_sea",
-           "freq_check", "freq_setup", "scenario_inputs", "load_guarded", "with_overrides", "check_memory",
+           "freq_check", "freq_setup", "scenario_inputs", "load_guarded", "with_overrides", "check_fits_in_memory",
            "available_memory", "compile_notice", "kernels_cached", "print_json"]
 
 DEFAULT_VESSEL = "ctv27"
 
 
 def resolve_db(spec: str):
-    """A database from a path (any supported format) or a built-in vessel name."""
-    from boatland.hydro import read_hydro
+    """A database from a path (any supported format) or a built-in vessel name
+    (:func:`boatland.hydro.load_database`)."""
+    from boatland.hydro import load_database
 
-    path = Path(spec)
-    if path.exists():
-        return read_hydro(path)[0]
-    from boatland.hydro.builtin import BUILTIN, load_builtin
-
-    if spec in BUILTIN:
-        return load_builtin(spec)
-    raise BoatlandInputError(f"{spec}: no such file, and not a built-in vessel "
-                             f"(built-in: {', '.join(sorted(BUILTIN))})")
+    return load_database(spec)
 
 
 def scenario_inputs(scenario) -> list[Path]:
@@ -38,7 +31,7 @@ def scenario_inputs(scenario) -> list[Path]:
     if scenario.source and not str(scenario.source).startswith("<"):
         files.append(Path(scenario.source))
     if scenario.vessel.database_path is not None:
-        from boatland.model.imported import database_files
+        from boatland.vessel.imported import database_files
 
         files += database_files(scenario.vessel.database_path)
     sea = scenario.sea
@@ -50,7 +43,7 @@ def scenario_inputs(scenario) -> list[Path]:
 def with_overrides(scenario, changes: dict, flags: dict):
     """``scenario.replace(changes)``; a refused value is named by its flag (``flags``: key path → flag),
     not blamed on the file."""
-    from boatland.model.tomlspec import SpecError
+    from boatland.tomlspec import SpecError
 
     if not changes:
         return scenario
@@ -65,7 +58,7 @@ def with_overrides(scenario, changes: dict, flags: dict):
 def load_guarded(path, outputs, extra_inputs=(), changes=None, flags=None):
     """Load a scenario for a command: parse and validate it, apply the flags' ``changes``, check the
     outputs against every file it reads (before anything heavy), then read its database and run every
-    check (:func:`boatland.scenario_check.check_loaded`). Warnings are returned, not printed.
+    check (:func:`boatland.checks.files.check_loaded`). Warnings are returned, not printed.
 
     ``outputs`` is a list of :class:`boatland.cli.guard.Output` or a callable ``outputs(scenario)``.
     Returns (scenario, db, warnings).
@@ -73,7 +66,7 @@ def load_guarded(path, outputs, extra_inputs=(), changes=None, flags=None):
     import warnings
 
     from boatland.cli.guard import check_outputs
-    from boatland.scenario_check import check_loaded, default_scenario_path, load
+    from boatland.checks.files import check_loaded, default_scenario_path, load
 
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
@@ -100,17 +93,17 @@ def available_memory() -> int:
         return 1 << 62
 
 
-def check_memory(scenario, db, *, flag: str = "simulation.duration", copies: int = 1) -> None:
+def check_fits_in_memory(setup, *, flag: str = "simulation.duration", copies: int = 1) -> None:
     """Refuse a run whose time series cannot fit in memory (``copies`` trials at once), saying how to
-    split it."""
-    from boatland.model.limits import run_bytes
+    split it (``setup``: :class:`boatland.landing.setup.Setup`)."""
+    from boatland.checks.limits import run_bytes
 
-    n = scenario.n_steps(db)
+    scenario, n = setup.scenario, setup.n_steps
     nc = len(scenario.fender.points) if scenario.fender is not None else 0
     need = run_bytes(n, nc) * copies
     have = int(0.8 * available_memory())
     if need > have:
-        dt = scenario.time_step(db)
+        dt = setup.dt
         fit = max(1.0, (have / copies) / run_bytes(1, nc) * dt)
         raise BoatlandInputError(
             f"{flag} {scenario.simulation.duration:g} s: {n} steps of dt = {dt:g} s need about "
@@ -171,7 +164,7 @@ def freq_directions(scenario, db, beta, key: str) -> None:
     """Refuse relative directions the database does not cover, naming the option (``key``) that gave them."""
     import numpy as np
 
-    from boatland.model.wave_directions import direction_problem
+    from boatland.vessel.directions import direction_problem
 
     problem = direction_problem(db, np.atleast_1d(beta), name=repr(scenario.vessel.database or db.name))
     if problem:
@@ -201,10 +194,10 @@ def kernels_cached() -> bool:
         from boatland.contact.fender import decide_modes
         from boatland.integrate.cummins import run_cummins
         from boatland.trial.events import track_landing
-        from boatland.waves.synthesis import _harmonic_sum
+        from boatland.waves.synthesis import harmonic_sum_kernel
 
         return all(bool(k._cache._cache_file._load_index())
-                   for k in (run_cummins, decide_modes, track_landing, _harmonic_sum))
+                   for k in (run_cummins, decide_modes, track_landing, harmonic_sum_kernel))
     except Exception:  # noqa: BLE001 - a notice only: never stop a run over it
         return True
 

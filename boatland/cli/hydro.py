@@ -87,7 +87,7 @@ def cmd_import(args) -> int:
     db, fmt = read_hydro(args.path, fmt=args.format, rho=args.rho, g=args.g)
     given = [f for f in ("mass", "cog", "radii", "inertia") if getattr(args, f) is not None]
     if given or args.hydrostatic_restoring:
-        from boatland.model.imported import MassProperties, apply_mass_properties
+        from boatland.vessel.imported import MassProperties, apply_mass_properties
 
         if args.radii is None and args.inertia is None:
             raise BoatlandInputError("--radii or --inertia: missing: the mass properties need the body's inertia "

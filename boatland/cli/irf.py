@@ -33,9 +33,9 @@ def add_parser(sub) -> None:
     irf.add_argument("--band", type=in_range(0.0, None, lo_open=False), nargs=2, metavar=("LO", "HI"),
                      help="frequency band [rad/s] of the round-trip check (default: the whole band)")
     irf.add_argument("--target-r2", type=in_range(0.0, 1.0, hi_open=True),
-                     help="state-space fit target R² (default 0.99999: boatland.model.radiation.TARGET_R2)")
+                     help="state-space fit target R² (default 0.99999: boatland.vessel.radiation.TARGET_R2)")
     irf.add_argument("--max-order", type=integer(2, 200),
-                     help="largest state-space order per pair (default 40: boatland.model.radiation.MAX_ORDER)")
+                     help="largest state-space order per pair (default 40: boatland.vessel.radiation.MAX_ORDER)")
     irf.add_argument("--no-fit", action="store_true", help="skip the state-space fit")
     irf.add_argument("--plot", type=Path, metavar="PNG", help="write a figure of K(t), B and A")
     irf.add_argument("-o", "--output", type=Path,
@@ -50,7 +50,7 @@ def cmd(args) -> int:
     from boatland.hydro.bemio import write_bemio, write_radiation
     from boatland.hydro.irf_report import irf_summary, irf_table, plot_irf
     from boatland.irf.impulse import IRFSettings
-    from boatland.model.radiation import MAX_ORDER, TARGET_R2, default_dt, radiation_memory
+    from boatland.vessel.radiation import MAX_ORDER, TARGET_R2, default_dt, radiation_memory
 
     is_file = Path(args.database).exists()
     if args.band and not args.band[0] < args.band[1]:

@@ -91,7 +91,7 @@ def cmd(args) -> int:
                   f"{r['normal_kN']:7.1f} {r['vertical_kN']:7.1f} {r['horizontal_kN']:7.1f}")
     if args.output:
         from boatland.freqdomain.figures import plot_raos
-        from boatland.trial.inputs import heading_name
+        from boatland.scenario.inputs import heading_name
 
         wf = np.linspace(max(2 * np.pi / 25.0, db.omega[0]), db.omega[-1], 300)  # T ≤ 25 s
         plot_raos(wf, *solve(wf), args.output,

@@ -59,7 +59,8 @@ def add_parser(sub) -> None:
 
 
 def cmd(args) -> int:
-    from boatland.cli.common import check_memory, compile_notice, load_guarded
+    from boatland.cli.common import check_fits_in_memory, compile_notice, load_guarded
+    from boatland.landing.setup import landing_setup
     from boatland.trial.simulate import BlowUpError, simulate
 
     path = args.scenario
@@ -71,15 +72,16 @@ def cmd(args) -> int:
                if v is not None}
     scenario, db, warns = load_guarded(path, lambda sc: _outputs(args, sc), changes=changes,
                                        flags={"simulation.duration": "--duration", "simulation.seed": "--seed"})
-    check_memory(scenario, db, flag="--duration" if args.duration is not None else f"{scenario.source}: "
-                                                                                     "simulation.duration")
+    setup = landing_setup(scenario, db)
+    check_fits_in_memory(setup, flag="--duration" if args.duration is not None else f"{scenario.source}: "
+                                                                                    "simulation.duration")
     sinks, log_path, live = _recording_sinks(args, scenario)
     compile_notice()
     if not args.json:
-        print(f"running {scenario.name}: {scenario.simulation.duration:g} s at dt = {scenario.time_step(db):g} s "
-              f"({scenario.n_steps(db)} steps), {db.name}, radiation {scenario.radiation.method}", file=sys.stderr)
+        print(f"running {scenario.name}: {scenario.simulation.duration:g} s at dt = {setup.dt:g} s "
+              f"({setup.n_steps} steps), {db.name}, radiation {scenario.radiation.method}", file=sys.stderr)
     try:
-        result = _simulate_with_bar(simulate, scenario, db, show=not args.json, sinks=sinks,
+        result = _simulate_with_bar(simulate, setup, show=not args.json, sinks=sinks,
                                     progress_file=args.progress_file)
     except BlowUpError as exc:
         print(f"boatland: error: {path or scenario.source}: {exc}", file=sys.stderr)
@@ -154,13 +156,13 @@ def _recording_sinks(args, scenario):
     return sinks, log_path, live
 
 
-def _simulate_with_bar(simulate, scenario, db, *, show: bool, sinks=(), progress_file: Path | None = None):
+def _simulate_with_bar(simulate, setup, *, show: bool, sinks=(), progress_file: Path | None = None):
     """Run one trial with a progress bar on stderr (simulated seconds; hidden when stderr is not a
     terminal or ``show`` is False), feeding ``sinks`` (run log, Rerun) as it runs. ``progress_file``:
     also keep the kernel's step counter in this file (one number, rewritten in place as it grows)."""
     from contextlib import ExitStack
 
-    dt = scenario.time_step(db)
+    scenario, db, dt = setup.scenario, setup.db, setup.dt
     with ExitStack() as stack:
         report = []
         if progress_file is not None:
@@ -171,7 +173,7 @@ def _simulate_with_bar(simulate, scenario, db, *, show: bool, sinks=(), progress
             from tqdm import tqdm
 
             bar = stack.enter_context(tqdm(
-                total=round(scenario.n_steps(db) * dt, 2), unit="s", unit_scale=False, file=sys.stderr,
+                total=round(setup.n_steps * dt, 2), unit="s", unit_scale=False, file=sys.stderr,
                 disable=None, leave=False, desc="simulated", dynamic_ncols=True,
                 bar_format="{desc} {n:.1f}/{total:.1f} s |{bar}| {elapsed}<{remaining}"))
 
@@ -184,11 +186,11 @@ def _simulate_with_bar(simulate, scenario, db, *, show: bool, sinks=(), progress
                     shown[0] = time.monotonic()
             report.append(to_bar)
         if not report:
-            return simulate(scenario, db, sinks=sinks)
+            return simulate(scenario, db, sinks=sinks, setup=setup)
 
         def progress(done, total):
             for r in report:
                 r(done, total)
 
-        return simulate(scenario, db, progress=progress, sinks=sinks,
+        return simulate(scenario, db, progress=progress, sinks=sinks, setup=setup,
                         progress_every=0.0 if progress_file is not None else 0.1)

@@ -25,7 +25,7 @@ def add_parser(sub) -> None:
 
 
 def check(args) -> int:
-    from boatland.scenario_check import check_file
+    from boatland.checks.files import check_file
 
     report = check_file(args.file)
     if args.json:
@@ -38,7 +38,7 @@ def check(args) -> int:
 
 
 def schema(args) -> int:
-    from boatland.scenario_check import schema_text
+    from boatland.checks.files import schema_text
 
     print(schema_text())
     return 0

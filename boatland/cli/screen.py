@@ -119,8 +119,7 @@ def _sea_shape(scenario) -> str:
     sea, _ = freq_sea(scenario)
     if sea is None:
         return "JONSWAP spectra"
-    names = {"jonswap": "JONSWAP", "pm": "Pierson–Moskowitz", "tma": "TMA"}
-    return names.get(sea.kind, sea.kind) + (f" γ {sea.gamma:g}" if sea.gamma is not None else "") + " spectra"
+    return sea.shape.label + (f" γ {sea.gamma:g}" if sea.gamma is not None else "") + " spectra"
 
 
 def _shear_sweep(args, scenario, db, setup, beta, sea, depth) -> int:

@@ -83,7 +83,7 @@ def _scenarios(cases) -> Path:
     files = {f for c in cases for f in c.scenario_files}
     if not files:
         return Path(".")
-    from boatland.scenario_check import default_scenario_path
+    from boatland.checks.files import default_scenario_path
 
     folder = default_scenario_path().parent          # one line if the checkout's scenarios are not there
     missing = sorted(f for f in files if not (folder / f).is_file())

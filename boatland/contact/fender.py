@@ -29,7 +29,7 @@ the end of the line the normal follows the tube surface to that end, :math:`n = 
 a_c)_{xy}|`, :math:`\delta = \rho_c - |(Q - a_c)_{xy}|` (continuous with the face at :math:`|s| = w_c`).
 The geometry assumes the fender is compressed less than a tube radius; a lumped spring that compresses
 further (the tank model's c_f = 0.5 kN/m: 0.12 m under 62 N on a 17 mm tube) is given a flat plate at
-the tubes' front instead by :func:`boatland.trial.simulate.contact_arrays` — with a tube axis behind the
+the tubes' front instead by :func:`boatland.landing.contacts.fender_on_landing` — with a tube axis behind the
 face, the face normal would turn the normal force about it, a yaw lever with no physical counterpart. The
 tangents are :math:`t_v = e_z` and :math:`t_h = e_z \times n`. The contact is **off the landing** when Q is above
 or below the tube, or when the tube has passed the end of the fender line by a tube radius (no
@@ -98,17 +98,15 @@ from llvmlite import ir
 from numba import njit, types
 from numba.core.extending import intrinsic
 
-from boatland.rigid import add_point_force, rotation_matrix
+from boatland.rigid import add_point_force
 
 __all__ = ["Contacts", "contact_set", "no_contacts", "stribeck", "contact_workspace", "contact_states",
            "contact_forces", "decide_modes", "contact_state_arrays", "accumulate_sliding", "OPEN", "STICK", "SLIP", "OFF",
-           "MODE_NAMES", "RK4_WEIGHTS"]
+           "MODE_NAMES"]
 
 OPEN, STICK, SLIP, OFF = 0, 1, 2, 3
 #: What the mode codes mean (records, events, logs).
 MODE_NAMES = ("open", "stick", "slip", "off the landing")
-#: Weights b of classic RK4, by stage (the friction work of a step is their quadrature).
-RK4_WEIGHTS = (1.0 / 6.0, 1.0 / 3.0, 1.0 / 3.0, 1.0 / 6.0)
 
 
 class Contacts(NamedTuple):
@@ -240,7 +238,8 @@ def _speed(u0, u1, sideways):
     return math.sqrt(u0 * u0 + u1 * u1) if sideways else abs(u0)
 
 
-def contact_workspace(nc: int, sideways: bool):
+@njit(cache=True)
+def contact_workspace(nc, sideways):
     """Buffers of :func:`contact_states`, :func:`contact_forces` and :func:`decide_modes` for ``nc``
     contacts, allocated once per run (the hot loop allocates nothing).
 
@@ -258,11 +257,6 @@ def contact_workspace(nc: int, sideways: bool):
     F_try : (6,)
         Scratch copy of the other forces for each trial solve of :func:`decide_modes`.
     """
-    return _workspace(nc, sideways)
-
-
-@njit(cache=True)
-def _workspace(nc, sideways):
     m = nc * (2 if sideways else 1)
     kin = (np.zeros((nc, 3)), np.zeros((nc, 3)), np.zeros((nc, 3)), np.zeros((nc, 2)), np.zeros((nc, 2)),
            np.zeros((nc, 2)), np.zeros((nc, 2)), np.zeros((nc, 2)), np.zeros((nc, 3)), np.zeros(nc, dtype=np.bool_))

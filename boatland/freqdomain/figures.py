@@ -86,7 +86,7 @@ def plot_limits(table, path: str | Path, *, title: str = "") -> Path:
 
 
 def figure_limits(table, *, title: str = ""):
-    """Polar map of :class:`~boatland.freqdomain.screening.LimitTable`: angle = relative wave direction
+    """Polar map of :class:`~boatland.freqdomain.statistics.LimitTable`: angle = relative wave direction
     (:mod:`boatland.plotstyle`: bow up, 180° head seas at the top, waves from starboard on the right),
     radius = Tp [s], colour = limiting Hs [m]. ``title``: the inputs (scenario, μ, push, ...)."""
     from boatland.plotstyle import POLAR_NOTE, heading_polar

@@ -3,7 +3,7 @@ r"""The landed vessel's slip margins as linear functions of the sea's standard-n
 Before its first slip the vessel on its landing is a linear system (every contact stuck on its
 compliant rubber, :func:`boatland.freqdomain.screening.landed_response`, which equals the time domain's
 stuck forces within about 1 %: tests/validation/test_hinge_reaction.py). On the grid of a
-:class:`~boatland.model.gaussian_sea.GaussianSea` (component i: ω_i, σ_i, direction θ_i, wave number k_i)
+:class:`~boatland.sea.gaussian.GaussianSea` (component i: ω_i, σ_i, direction θ_i, wave number k_i)
 every contact force component and the roll are, at the integrator's steps :math:`t_k = k\Delta t`,
 
 .. math::
@@ -49,7 +49,7 @@ loss (:math:`f_n < 0`), roll beyond θ_max.
 
 Memory. The matrix mapping u (2N) to every margin at every step (30 min at Δt = 0.05 s with
 N ≈ 1 200 and 34 margins: 36 000 × 34 rows of 2 400, 24 GB) is never formed: the series of one u
-are one inverse FFT of length n_fft per response (:func:`boatland.model.gaussian_sea.grid_series`;
+are one inverse FFT of length n_fft per response (:func:`boatland.sea.gaussian.grid_series`;
 O(n_fft log n_fft) each, 7 series), a row is formed when the sampler draws from its event
 (:meth:`LandedMargins.row`, O(N)), and rows for checks are streamed in blocks of steps
 (:meth:`LandedMargins.rows`).
@@ -71,9 +71,10 @@ import numpy as np
 from scipy.special import log_ndtr
 
 from boatland.errors import BoatlandInputError
-from boatland.freqdomain.screening import LandingSetup, landed_response
-from boatland.model.gaussian_sea import GaussianSea, grid_series
-from boatland.model.hydrodb import HydroDB
+from boatland.freqdomain.landing import LandingSetup
+from boatland.freqdomain.screening import landed_response
+from boatland.sea.gaussian import GaussianSea, grid_series
+from boatland.vessel.database import HydroDB
 
 __all__ = ["DIRECTIONS_DEFAULT", "KAPPA_DEFAULT", "Indicators", "LandedMargins", "landed_margins"]
 

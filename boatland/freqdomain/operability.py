@@ -30,11 +30,12 @@ from pathlib import Path
 import numpy as np
 
 from boatland.errors import BoatlandInputError, BoatlandWarning
-from boatland.freqdomain.screening import (ACCEPT_PRESETS, ACCESS_DURATION, LandingSetup, accept_probability,
-                                           distinct_events, limiting_hs, response_correlation, slip_transfer,
-                                           spectral_moments)
-from boatland.model.hydrodb import HydroDB
-from boatland.model.seastate import SpectrumPart
+from boatland.freqdomain.landing import LandingSetup
+from boatland.freqdomain.screening import slip_transfer
+from boatland.freqdomain.statistics import (ACCEPT_PRESETS, ACCESS_DURATION, accept_probability, distinct_events,
+                                            limiting_hs, response_correlation, spectral_moments)
+from boatland.vessel.database import HydroDB
+from boatland.sea.spectra import SpectrumPart
 
 __all__ = ["Availability", "ScatterTable", "availability", "read_scatter"]
 
@@ -189,7 +190,7 @@ def availability(db: HydroDB, setup: LandingSetup, scatter: ScatterTable, *, acc
     r"""Availability of push-on access over ``scatter`` (seed 002 §4.1, Tables 4.2–4.7).
 
     :math:`A = \sum_i p_i [H_{s,i} \le H_{s,lim}(T_{p,i}, \theta_i - \psi)]`, the limit from
-    :func:`~boatland.freqdomain.screening.limiting_hs` at each distinct (Tp, β) of the table.
+    :func:`~boatland.freqdomain.statistics.limiting_hs` at each distinct (Tp, β) of the table.
 
     Parameters
     ----------

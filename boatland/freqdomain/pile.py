@@ -1,7 +1,7 @@
 """Free RAOs with and without the monopile's scattered wave (seed 000 §5.1, Figs. 5.4–5.12).
 
 Near the turbine the vessel does not feel the open sea: :func:`rao_with_pile` adds the Froude–Krylov
-force of the pile's scattered wave (:func:`boatland.model.pile_diffraction.pile_scattered_excitation`)
+force of the pile's scattered wave (:func:`boatland.sea.pile.pile_scattered_excitation`)
 to the database's excitation and solves the free RAO (seed 000 eq. 3.31) both ways. The vessel's own
 scattering of the pile's wave is neglected, as in seed 000.
 """
@@ -9,8 +9,8 @@ scattering of the pile's wave is neglected, as in seed 000.
 from __future__ import annotations
 
 from boatland.freqdomain.rao import free_rao
-from boatland.model.hydrodb import HydroDB
-from boatland.model.pile_diffraction import pile_scattered_excitation
+from boatland.vessel.database import HydroDB
+from boatland.sea.pile import pile_scattered_excitation
 
 __all__ = ["rao_with_pile", "COMPARE_HEADINGS"]
 

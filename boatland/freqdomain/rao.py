@@ -9,7 +9,7 @@ Free vessel (seed 000 eq. 3.29–3.31):
 Vessel on its landing — "hinged" at body points :math:`r_c` (seed 002 §3.2.1, eq. 3.1–3.12, after Wu
 2014: the translation of each point is zero, the rotations are free), or held there by the fender's
 springs (the compliant rubber of :mod:`boatland.contact.fender`; the general linear restraint is
-:class:`boatland.model.landed.ContactLaw`). With the 3 × 6 map of the motions to the
+:class:`boatland.landing.law.ContactLaw`). With the 3 × 6 map of the motions to the
 translation of a point,
 
 .. math:: G_c\,\hat x = \hat x_{1:3} + \hat\theta \times r_c = [\,I \;\; -S(r_c)\,]\,\hat x,
@@ -62,7 +62,7 @@ Interpolation in ω (shared by both RAOs): A and B linearly (held at the first t
 the band); X linearly in ω and in β on its real and imaginary parts (periodically when the database
 goes round the circle or is a checked symmetric half circle; other directions are refused), with
 the exact long-wave limit X(0, β) = C[:, 2] below the band — the same interpolation the time-domain excitation
-uses (:func:`boatland.model.seastate.excitation_table`,
+uses (:func:`boatland.sea.states.excitation_table`,
 :func:`boatland.waves.excitation.interpolate_excitation`). Frequencies above the database's band are
 refused.
 """
@@ -74,10 +74,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from boatland.errors import BoatlandInputError
-from boatland.model.hydrodb import HydroDB
-from boatland.model.landed import ContactLaw, point_map, preload_stiffness, solve_saddle, static_preload, tangents
-from boatland.model.seastate import excitation_table
-from boatland.model.wave_directions import direction_problem
+from boatland.vessel.database import HydroDB
+from boatland.landing.law import ContactLaw, point_map, preload_stiffness, solve_saddle, static_preload, tangents
+from boatland.sea.states import excitation_table
+from boatland.vessel.directions import direction_problem
 from boatland.waves.excitation import interpolate_excitation
 
 __all__ = ["HingedResponse", "excitation_force", "free_rao", "hinged_rao", "impedance", "point_map",
@@ -96,7 +96,7 @@ def _omega(db: HydroDB, omega) -> np.ndarray:
 
 def _beta(db: HydroDB, beta_deg) -> np.ndarray:
     """The directions asked for, checked against those the database covers (a half circle of a hull it
-    shows port–starboard symmetric counts as the full circle: :mod:`boatland.model.wave_directions`)."""
+    shows port–starboard symmetric counts as the full circle: :mod:`boatland.vessel.directions`)."""
     if beta_deg is None:
         return np.asarray(db.wave_dir_deg, dtype=float).copy()
     b = np.atleast_1d(np.asarray(beta_deg, dtype=float))
@@ -133,7 +133,7 @@ def excitation_force(db: HydroDB, omega, beta_deg=None) -> np.ndarray:
 
     Bilinear in (ω, β) on real and imaginary parts, towards the long-wave limit
     :math:`X(0,\beta) = C_{:,2}` below the band — exactly what the time-domain excitation uses
-    (:func:`boatland.model.seastate.excitation_table`): periodic in β when the database goes round the
+    (:func:`boatland.sea.states.excitation_table`): periodic in β when the database goes round the
     circle, or is a half circle of a hull it shows port–starboard symmetric (completed by
     :math:`X_j(360° - \beta) = s_j X_j(\beta)`). ``beta_deg`` None = the database's directions.
 
@@ -141,7 +141,7 @@ def excitation_force(db: HydroDB, omega, beta_deg=None) -> np.ndarray:
     ------
     BoatlandInputError
         A direction outside those the database covers (an asymmetric or partial table, a single
-        direction): :func:`boatland.model.wave_directions.direction_problem`.
+        direction): :func:`boatland.vessel.directions.direction_problem`.
     """
     w = _omega(db, omega)
     b = _beta(db, beta_deg)
@@ -285,7 +285,7 @@ def hinged_rao(db: HydroDB, omega, points, *, beta_deg=None, normal=None, stiffn
                tube_radius=np.inf) -> HingedResponse:
     r"""Motions and contact forces of the vessel on its landing (Grøtting 2015 §3.2.1 after Wu 2014).
 
-    Solves (:mod:`boatland.model.landed`; Grøtting 2015 eq. 3.1–3.12)
+    Solves (:mod:`boatland.landing.law`; Grøtting 2015 eq. 3.1–3.12)
 
     .. math::
         \begin{bmatrix} Z - K_g + \sum (k + i\omega c)\, G_c^\top d\,d^\top G_c & -\mathcal T^\top \\
@@ -309,7 +309,7 @@ def hinged_rao(db: HydroDB, omega, points, *, beta_deg=None, normal=None, stiffn
     (k + i\omega c)\,d\,d^\top G_c \hat x`.
 
     With a ``thrust`` T, the static problem gives the preload :math:`x^0, J^0`
-    (:func:`boatland.model.landed.static_preload`: the same system at ω = 0 with the follower thrust
+    (:func:`boatland.landing.law.static_preload`: the same system at ω = 0 with the follower thrust
     :math:`T[e_x;\ r_T \times e_x]` as load) and the dynamic system is linearised about it with
     :math:`K_g` = :func:`preload_stiffness` (the follower force :math:`T\theta\times e_x` of Grøtting
     2015 eq. 3.62–3.63 and the turning of the static forces' moments). The static rotation, O(T/C₅₅),
@@ -341,7 +341,7 @@ def hinged_rao(db: HydroDB, omega, points, *, beta_deg=None, normal=None, stiffn
     additional_damping : array_like, shape (6, 6) or (6,), optional
         Extra linear damping of the vessel.
     normal_follows : {"fixed", "fender", "tube"}
-        How the contact normals turn with the motions (:meth:`boatland.model.landed.ContactLaw.geometric_stiffness`:
+        How the contact normals turn with the motions (:meth:`boatland.landing.law.ContactLaw.geometric_stiffness`:
         the face of a line fender turns with the yaw, a point on a round tube follows its surface).
     tube_radius : float or array_like
         Tube radius [m] for ``normal_follows="tube"``.

@@ -11,7 +11,7 @@ from pathlib import Path
 import numpy as np
 
 from boatland.errors import HydroDataError
-from boatland.model.hydrodb import HydroDB
+from boatland.vessel.database import HydroDB
 
 __all__ = ["TextFile", "is_number", "find_sibling", "find_child", "normalise_directions", "build_db"]
 

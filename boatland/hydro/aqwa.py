@@ -1,4 +1,4 @@
-r"""AQWA ``.AH1`` hydrodynamic database (+ optional ``.LIS``) → :class:`~boatland.model.HydroDB`.
+r"""AQWA ``.AH1`` hydrodynamic database (+ optional ``.LIS``) → :class:`~boatland.vessel.HydroDB`.
 
 Layout of the ``.AH1`` (AQWA-LINE "OPTIONS AHD1" output; notes/hydro-formats.md). Lines starting
 with ``*`` are comments (run date, and the frequencies of the low/high-frequency limits). Then::
@@ -38,7 +38,7 @@ import numpy as np
 
 from boatland.errors import HydroDataError
 from boatland.hydro._text import TextFile, build_db, find_sibling, normalise_directions
-from boatland.model.hydrodb import HydroDB, Provenance, rigid_body_mass_matrix
+from boatland.vessel.database import HydroDB, Provenance, rigid_body_mass_matrix
 
 __all__ = ["read_aqwa"]
 

@@ -32,7 +32,7 @@ import numpy as np
 from boatland import __version__
 from boatland.atomic import atomic_path
 from boatland.errors import HydroDataError
-from boatland.model.hydrodb import HullMesh, HydroDB, Provenance
+from boatland.vessel.database import HullMesh, HydroDB, Provenance
 
 __all__ = ["read_bemio", "write_bemio", "is_bemio", "write_radiation", "read_radiation"]
 
@@ -334,7 +334,7 @@ def write_radiation(path: str | Path, memory, rho: float) -> Path:
 
 
 def read_radiation(path: str | Path):
-    """The :class:`boatland.model.radiation.RadiationMemory` stored by :func:`write_radiation`, or None.
+    """The :class:`boatland.vessel.radiation.RadiationMemory` stored by :func:`write_radiation`, or None.
 
     Only boatland's own (exact) copy is read; IRFs from other tools are recomputed from B(ω).
     """
@@ -342,7 +342,7 @@ def read_radiation(path: str | Path):
 
     from boatland.irf.impulse import IRF, IRFSettings
     from boatland.irf.statespace import PairFit, StateSpace
-    from boatland.model.radiation import RadiationMemory
+    from boatland.vessel.radiation import RadiationMemory
 
     with h5py.File(path, "r") as f:
         if _XIRF not in f:

@@ -1,24 +1,24 @@
 r"""Build a hydrodynamic database for a parametric catamaran with Capytaine 3.0.
 
-:func:`build_database` turns a :class:`~boatland.model.vessel.VesselSpec` into a
-:class:`~boatland.model.hydrodb.HydroDB`; :func:`build_from_file` does it for a vessel file and
+:func:`build_database` turns a :class:`~boatland.vessel.files.VesselSpec` into a
+:class:`~boatland.vessel.database.HydroDB`; :func:`build_from_file` does it for a vessel file and
 writes the BEMIO HDF5 database (atomically).
 
 Numerics, chosen deliberately
 -----------------------------
 - **Mesh**: the hull form of the vessel file. The generalized Wigley catamaran of
-  :mod:`boatland.model.hull` is fore–aft symmetric: only a quarter is meshed — the port demihull's
+  :mod:`boatland.vessel.wigley` is fore–aft symmetric: only a quarter is meshed — the port demihull's
   forebody — and Capytaine is told about both symmetry planes with nested
   :class:`capytaine.ReflectionSymmetricMesh` (``xOz`` inside, ``yOz`` outside), which cuts the
   influence matrices to four independent blocks; its centre of gravity need not be symmetric (it
-  enters only M and C). The CTV form of :mod:`boatland.model.ctv_hull` (transom stern) is symmetric
+  enters only M and C). The CTV form of :mod:`boatland.vessel.ctv_hull` (transom stern) is symmetric
   port–starboard only: the whole port demihull is meshed, transom included, with one ``xOz``
   reflection (two blocks, each twice as large: about four times the ctv24 cost for the same panel
   size). The part above the waterline (topsides, deck) goes into the database for the viewers only.
   Panel size: by default the largest panel edge is
   λ(ω_max)/8, i.e. at least 8 panels per shortest wavelength (Capytaine itself warns below ~5.7 for
   square panels: face radius > λ/8); the vessel file may set it or the panel counts, and fewer than
-  4 panels per wavelength is refused (:mod:`boatland.model.vessel`). The figure is recorded in the
+  4 panels per wavelength is refused (:mod:`boatland.vessel.files`). The figure is recorded in the
   provenance notes.
 - **Lid** (irregular-frequency removal): a panel lid inside each demihull's waterplane, built here
   rather than with ``generate_lid`` so that it is itself a symmetric quarter matching the hull
@@ -43,8 +43,8 @@ Numerics, chosen deliberately
   reference point, and its wave direction is the direction of travel, as boatland's.
 - **Restoring**: Capytaine's rigid-body hydrostatic stiffness with the vessel's mass and centre of
   gravity (hydrostatics plus the weight terms), cross-checked against the closed-form values of
-  :class:`~boatland.model.hull.WigleyCatamaran` or the quadrature of the lines of
-  :class:`~boatland.model.ctv_hull.CTVCatamaran` (difference noted).
+  :class:`~boatland.vessel.wigley.WigleyCatamaran` or the quadrature of the lines of
+  :class:`~boatland.vessel.ctv_hull.CTVCatamaran` (difference noted).
 """
 
 from __future__ import annotations
@@ -62,10 +62,10 @@ from typing import Iterator
 import numpy as np
 
 from boatland.conventions import PORT_STARBOARD_SIGN, mirror_direction_deg
-from boatland.model.ctv_hull import CTVCatamaran
-from boatland.model.hull import WigleyCatamaran
-from boatland.model.hydrodb import HydroDB, Provenance
-from boatland.model.vessel import VesselSpec, load_vessel
+from boatland.vessel.ctv_hull import CTVCatamaran
+from boatland.vessel.wigley import WigleyCatamaran
+from boatland.vessel.database import HydroDB, Provenance
+from boatland.vessel.files import VesselSpec, load_vessel
 
 __all__ = ["build_database", "build_from_file", "capytaine_body", "lid_depth", "mirror_directions", "SOLVER"]
 
@@ -399,7 +399,7 @@ def build_from_file(path: str | Path, out_path: str | Path, progress: bool = Tru
     """Build the database of the vessel file ``path`` and write it to ``out_path`` (BEMIO HDF5, atomic).
 
     A vessel file with a ``[bem]`` table is not solved: its BEM output is read and given the file's mass
-    properties (:mod:`boatland.hydro.imported`).
+    properties (:func:`boatland.hydro.read.database_of`).
 
     Returns
     -------
@@ -412,8 +412,8 @@ def build_from_file(path: str | Path, out_path: str | Path, progress: bool = Tru
         The vessel file has problems (all listed, with key paths).
     """
     from boatland.hydro.bemio import write_bemio
-    from boatland.hydro.imported import database_of
-    from boatland.model.imported import ImportedVesselSpec
+    from boatland.hydro.read import database_of
+    from boatland.vessel.imported import ImportedVesselSpec
 
     spec = load_vessel(path)
     db = database_of(spec) if isinstance(spec, ImportedVesselSpec) else build_database(spec, progress=progress)

@@ -12,7 +12,7 @@ from importlib.resources import files
 from pathlib import Path
 
 from boatland.errors import BoatlandInputError
-from boatland.model.hydrodb import HydroDB
+from boatland.vessel.database import HydroDB
 
 __all__ = ["BUILTIN", "builtin_path", "load_builtin", "vessel_file"]
 

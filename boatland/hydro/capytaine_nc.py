@@ -1,4 +1,4 @@
-r"""Capytaine NetCDF dataset (2.x and 3.0) → :class:`~boatland.model.HydroDB`.
+r"""Capytaine NetCDF dataset (2.x and 3.0) → :class:`~boatland.vessel.HydroDB`.
 
 Layout (Capytaine docs, "Outputs": ``assemble_dataset`` / ``export_dataset``; notes/hydro-formats.md):
 ``added_mass`` and ``radiation_damping`` over (frequency, ``radiating_dof``, ``influenced_dof``) in
@@ -24,7 +24,7 @@ import numpy as np
 from boatland.conventions import DOF_NAMES
 from boatland.errors import HydroDataError
 from boatland.hydro._text import build_db, normalise_directions
-from boatland.model.hydrodb import HydroDB, Provenance
+from boatland.vessel.database import HydroDB, Provenance
 
 __all__ = ["read_capytaine"]
 

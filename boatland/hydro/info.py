@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from boatland.model.hydrodb import HydroDB
-from boatland.model.wave_directions import direction_coverage
+from boatland.vessel.database import HydroDB
+from boatland.vessel.directions import direction_coverage
 
 __all__ = ["summary", "summary_text"]
 
@@ -17,7 +17,7 @@ def summary(db: HydroDB) -> dict:
     -------
     dict
         name, solver, source, frequency band and count, directions and their coverage
-        (:func:`boatland.model.wave_directions.direction_coverage`: kind and text), depth, ρ, g, mass, volume,
+        (:func:`boatland.vessel.directions.direction_coverage`: kind and text), depth, ρ, g, mass, volume,
         centre of gravity, A∞/A₀ availability, heave/roll/pitch natural periods (s, None where not
         defined), panel count, and the warnings of :meth:`HydroDB.diagnostics`.
     """

@@ -8,8 +8,8 @@ import numpy as np
 
 from boatland.irf.impulse import pair_name
 from boatland.irf.statespace import frequency_response
-from boatland.model.hydrodb import HydroDB
-from boatland.model.radiation import RadiationMemory
+from boatland.vessel.database import HydroDB
+from boatland.vessel.radiation import RadiationMemory
 
 __all__ = ["irf_table", "irf_summary", "plot_irf", "figure_irf"]
 

@@ -1,4 +1,4 @@
-r"""NEMOH v2 / v3 run folder → :class:`~boatland.model.HydroDB`.
+r"""NEMOH v2 / v3 run folder → :class:`~boatland.vessel.HydroDB`.
 
 Files read (NEMOH user manuals v2.0 and v3.0; notes/hydro-formats.md):
 
@@ -29,7 +29,7 @@ import numpy as np
 
 from boatland.errors import HydroDataError
 from boatland.hydro._text import TextFile, build_db, find_child, normalise_directions
-from boatland.model.hydrodb import HydroDB, Provenance
+from boatland.vessel.database import HydroDB, Provenance
 
 __all__ = ["read_nemoh"]
 

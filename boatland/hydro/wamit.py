@@ -1,4 +1,4 @@
-r"""WAMIT output (``.1``, ``.3``, ``.hst``, ``.out``) → :class:`~boatland.model.HydroDB`.
+r"""WAMIT output (``.1``, ``.3``, ``.hst``, ``.out``) → :class:`~boatland.vessel.HydroDB`.
 
 Format (WAMIT User Manual v7, ch. 4 "Output"; notes/hydro-formats.md):
 
@@ -35,7 +35,7 @@ import numpy as np
 
 from boatland.errors import HydroDataError
 from boatland.hydro._text import TextFile, build_db, find_sibling, is_number, normalise_directions
-from boatland.model.hydrodb import HydroDB, Provenance
+from boatland.vessel.database import HydroDB, Provenance
 
 __all__ = ["read_wamit"]
 

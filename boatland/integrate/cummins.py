@@ -40,9 +40,10 @@ import time
 import numpy as np
 from numba import njit, objmode
 
-from boatland.contact.fender import (OFF, RK4_WEIGHTS, _workspace, accumulate_sliding, contact_forces,
-                                     contact_state_arrays, contact_states, decide_modes)
+from boatland.contact.fender import (OFF, accumulate_sliding, contact_forces, contact_state_arrays, contact_states,
+                                     contact_workspace, decide_modes)
 from boatland.rigid import add_point_force, rotation_matrix
+from boatland.rk4 import A_NEXT, B, C_HALF_STEPS
 
 __all__ = ["run_cummins", "STATUS_OK", "STATUS_NAN", "STATUS_RUNAWAY", "STATUS_SLID_OFF", "STATUS_MESSAGES"]
 
@@ -60,10 +61,12 @@ STATUS_MESSAGES = {
 OUTCOME_STATUSES = (STATUS_OK, STATUS_SLID_OFF)
 
 
-#: RK4 stages: time of each stage in half steps into the step (c = 0, ½, ½, 1 → 0, 1, 1, 2; also the row
-#: of the history sums) and the step fraction from the step start to the next stage.
-_C2 = (0, 1, 1, 2)
-_A_NEXT = (0.5, 0.5, 1.0)  # indexed by stage − 1 (stage 0 is the step start)
+#: RK4 stages (:mod:`boatland.rk4`): time of each stage in half steps into the step (c = 0, ½, ½, 1 → 0, 1, 1,
+#: 2; also the row of the history sums), the step fraction from the step start to each stage after the first
+#: (indexed by stage − 1; stage 0 is the step start) and the weights.
+_C2 = C_HALF_STEPS
+_A_NEXT = A_NEXT
+_B = B
 
 
 @njit(cache=True, _nrt=False, forceinline=True)
@@ -137,7 +140,7 @@ def _state_space(v, z, ss_A, ss_B, ss_C, ss_seg, rows, st, kz, F):
         \dot z_s = (a_s z_s + b_s \dot x_{j(s)}) + a^{\uparrow}_s z_{s+1} + a^{\downarrow}_s z_{s-1},
         \qquad F_i \mathrel{-}= c_s z_s \ \text{for the states } s \text{ of output DOF } i \text{ in order}
 
-    in the layout of :func:`boatland.model.motion.modal_layout`: a complex pair's partner is the state
+    in the layout of :func:`boatland.trial.motion.modal_layout`: a complex pair's partner is the state
     above or below (the other coefficient zero), each run of ``ss_seg`` shares its input DOF, and the
     six output sums (``rows``: first state and count per output DOF) run side by side. Every loop is
     contiguous with unsigned indices, so the derivative vectorises.
@@ -336,7 +339,7 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
     conv : bool
         True: convolution memory with ``Kh`` (npairs, nK2) = K(k Δt/2) of the pairs
         (``pairs_i``, ``pairs_j``) over ``n_hist`` past steps. False: state space in modal
-        (block-diagonal) form, laid out by :func:`boatland.model.motion.modal_layout`: ``ss_A`` (3, N)
+        (block-diagonal) form, laid out by :func:`boatland.trial.motion.modal_layout`: ``ss_A`` (3, N)
         each state's coefficient of itself, of the state above and of the state below, ``ss_B`` (N,),
         ``ss_C`` (N,), ``ss_seg`` (n_seg, 3) runs [start, end) sharing an input DOF, ``ss_rows`` (6, 2)
         first state and number of states per output DOF (N = states + 2 zero guards).
@@ -374,7 +377,7 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
     """
     nc = ct.P.shape[0]
     cs = contact_state_arrays(nc)
-    ws = _workspace(nc, ct.sideways)
+    ws = contact_workspace(nc, ct.sideways)
     tpos = ws[0][6]  # positions of the contacts on the landing at the stage state (contact_states)
     records = (np.zeros((nc, 2)), np.zeros(nc), np.zeros(nc), np.zeros(nc))  # f_t, f_n, needed, available
     n_s = ss_B.shape[0]
@@ -415,7 +418,7 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
                 if n + 1 > gate[0]:                   # integrate beyond t_n only once the sinks allow it
                     _wait_for_gate(gate, n + 1)
             if nc:
-                accumulate_sliding(ct, cs, ws[0], records[0], RK4_WEIGHTS[st] * dt)
+                accumulate_sliding(ct, cs, ws[0], records[0], _B[st] * dt)
         if n == n_steps:
             break
         for d in range(6):

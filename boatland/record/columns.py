@@ -105,7 +105,7 @@ class BowElevation:
         gx, gy = x0 + np.cos(psi) * bx - np.sin(psi) * by, y0 + np.sin(psi) * bx + np.cos(psi) * by
         comps = info.waves.realise(info.scenario.simulation.seed, n * self.dt)
         self.omega = comps.omega
-        self.coef = sea_coefficients(comps, gx, gy, pile_of(info.scenario, info.db, info.waves))
+        self.coef = sea_coefficients(comps, gx, gy, pile_of(info.setup, info.waves))
         self.ramp = wave_ramp(info.scenario, self.dt, n)[::2]
 
     def __call__(self, k0: int, k1: int) -> np.ndarray:

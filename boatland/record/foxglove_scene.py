@@ -295,14 +295,13 @@ if __name__ == "__main__":      # regenerate the shipped layout from the default
     import warnings
 
     from boatland.record.scene import scene_from_trial
-    from boatland.scenario_check import default_scenario_path, load_checked
-    from boatland.trial.simulate import contact_arrays
+    from boatland.checks.files import default_scenario_path, load_checked
+    from boatland.landing.setup import landing_setup
 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         _sc, _db, _ = load_checked(default_scenario_path())
-    _c = contact_arrays(_sc, _db)
-    _scene = scene_from_trial(_sc, _db, _sc.start_pose(), _c, waves=False)
+    _scene = scene_from_trial(landing_setup(_sc, _db), waves=False)
     _path = layout_path()
     _path.write_text(json.dumps(foxglove_layout(len(_scene.fender_points), _scene), indent=2) + "\n")
     print(f"wrote {_path}")

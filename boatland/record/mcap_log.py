@@ -37,6 +37,7 @@ from boatland.record.scene import Scene, scene_from_trial, scene_metadata
 from boatland.record.schemas import LOG_FORMAT, LOG_LEVEL, RAD2DEG, STEP_TOPICS, TOPICS, file_descriptor_set, \
     message_class
 from boatland.trial.events import track_landing
+from boatland.trial.incidents import RollAbove, SlipDistance, trial_incidents
 
 __all__ = ["McapLog", "PROFILE", "LIBRARY", "METADATA_NAME", "SUMMARY_NAME", "columns_from_block", "block_values",
            "step_events", "end_event", "IncidentWatch"]
@@ -297,7 +298,7 @@ class McapLog:
         self._anchor = np.full((nc, 2), np.nan)      # landing positions carried across blocks
         self._eta = BowElevation(info)               # the sea at the bow, summed block by block
         self._incidents = IncidentWatch(info.scenario)
-        self._scene: Scene = scene_from_trial(info.scenario, info.db, info.start_pose, info.contacts, waves=False)
+        self._scene: Scene = scene_from_trial(info.setup, info.contacts, waves=False)
         self._log_cls = message_class("foxglove.Log")
         self._layout = _Layout(nc)
         self._seq = 0
@@ -390,17 +391,19 @@ class IncidentWatch:
     a threshold, roll over a limit; contact loss is already a contact event)."""
 
     def __init__(self, scenario):
-        inc = scenario.incidents
-        self.slip = list(inc.slip_distance) if inc is not None else [0.1]
-        self.roll = list(inc.roll_limit_deg) if inc is not None else []
+        defs = trial_incidents(scenario.incidents)
+        self.slip = [d.distance for d in defs if isinstance(d, SlipDistance)]
+        self.roll = [d.limit_deg for d in defs if isinstance(d, RollAbove)]
+        self.slip_names = {d.distance: d.name for d in defs if isinstance(d, SlipDistance)}
+        self.roll_names = {d.limit_deg: d.name for d in defs if isinstance(d, RollAbove)}
         self.done: set = set()
 
     def may_fire(self, worst_slip: float, x: np.ndarray) -> bool:
         """Cheap pre-check: could a pending incident be in this block (largest slip, motions)?"""
-        pending_slip = [lim for lim in self.slip if f"slip > {lim:g} m" not in self.done]
+        pending_slip = [lim for lim in self.slip if self.slip_names[lim] not in self.done]
         if pending_slip and worst_slip > min(pending_slip):
             return True
-        pending_roll = [lim for lim in self.roll if f"roll > {lim:g}°" not in self.done]
+        pending_roll = [lim for lim in self.roll if self.roll_names[lim] not in self.done]
         return bool(pending_roll) and np.degrees(np.abs(x[:, 3]).max()) > min(pending_roll)
 
     def __call__(self, t, x, slip) -> list[tuple[float, str]]:
@@ -410,13 +413,13 @@ class IncidentWatch:
         if slip.shape[1] and len(self.done) < len(self.slip):
             worst = np.fmax.reduce(slip, axis=1)          # NaN (not landed) only where all are NaN
             for lim in self.slip:
-                key = f"slip > {lim:g} m"
+                key = self.slip_names[lim]
                 if key not in self.done and (k := np.nonzero(worst > lim)[0]).size:
                     self.done.add(key)
                     out.append((float(t[k[0]]), f"incident: {key} at t = {t[k[0]]:.2f} s"))
         roll_max = np.degrees(np.abs(x[:, 3]).max()) if self.roll else 0.0
         for lim in self.roll:
-            key = f"roll > {lim:g}°"
+            key = self.roll_names[lim]
             if roll_max > lim and key not in self.done and (k := np.nonzero(np.abs(x[:, 3]) > np.radians(lim))[0]).size:
                 self.done.add(key)
                 out.append((float(t[k[0]]), f"incident: {key} at t = {t[k[0]]:.2f} s"))

@@ -24,6 +24,7 @@ from pathlib import Path
 import numpy as np
 
 from boatland.record.reader import RunLog
+from boatland.trial.incidents import SlipDistance, parse_incident
 
 __all__ = ["plot_run", "figure_of_run", "PANELS"]
 
@@ -32,6 +33,14 @@ PANELS = ("Wave at the bow and heave", "Roll and pitch", "Friction utilisation",
 #: Utilisation shown up to this value (a slipping contact's trial force can be far above 1).
 UTIL_MAX = 1.6
 
+
+
+def _definition(name: str):
+    """The incident definition a logged name stands for (None: a name this version does not know)."""
+    try:
+        return parse_incident(name)
+    except ValueError:
+        return None
 
 def plot_run(log: RunLog, output: str | Path, *, dpi: int = 110) -> Path:
     """Write the figure of ``log`` to ``output`` (format from the suffix, e.g. .png, .pdf, .svg)."""
@@ -50,7 +59,7 @@ def _provenance(log: RunLog) -> dict:
 
 
 def _title(log: RunLog, prov: dict) -> str:
-    from boatland.trial.inputs import short_inputs_text
+    from boatland.scenario.inputs import short_inputs_text
 
     name = log.metadata.get("scenario_name", prov.get("scenario", log.path.stem))
     inputs = prov.get("inputs", {})
@@ -154,7 +163,8 @@ def figure_of_run(log: RunLog):
         ax.plot(t, col, lw=0.9, ls="-" if j == 0 else "--", label=label)
     limits = []
     if log.summary is not None:
-        limits = [float(k.split(">")[1].split("m")[0]) for k in log.summary.get("incidents", {}) if k.startswith("slip >")]
+        kinds = [_definition(k) for k in log.summary.get("incidents", {})]
+        limits = [d.distance for d in kinds if isinstance(d, SlipDistance)]
     for lim in limits:
         ax.axhline(lim, color="0.5", lw=0.7, ls=":")
         ax.annotate(f"{lim:g} m", (1.0, lim), xycoords=("axes fraction", "data"), fontsize=7, color="0.35",

@@ -394,7 +394,7 @@ class RerunLog:
     def start(self, info) -> None:
         self.info = info
         nc = np.asarray(info.contacts[0]).reshape(-1, 3).shape[0]
-        scene = scene_from_trial(info.scenario, info.db, info.start_pose, info.contacts)
+        scene = scene_from_trial(info.setup, info.contacts)
         self.rec, self.kind, self.where = open_stream(self.target, recording_id=self.recording_id, n_contacts=nc,
                                                       quiet=self.quiet, bind=self.bind, port=self.port, scene=scene)
         self.view = RerunView(self.rec, scene, nc)

@@ -1,7 +1,7 @@
 """The 3D scene of a trial for the viewers: hull, monopile, landing tubes, fender lines, force arrows, sea.
 
 The hull is the database's wetted mesh plus, when the database has it, its part above the waterline —
-topsides, deck, deckhouse (``db.topsides``, a :class:`~boatland.model.hydrodb.HullMesh`); a database
+topsides, deck, deckhouse (``db.topsides``, a :class:`~boatland.vessel.database.HullMesh`); a database
 without a mesh shows a box. The wetted part is drawn in dark antifouling red, the topsides light grey,
 the sea translucent blue (:data:`COLORS`).
 
@@ -103,8 +103,8 @@ class Scene:
     ramp : callable t -> factor, or None
     notes : list of str
         What could not be rebuilt (replay).
-    pile : (radius, x, y, depth) or None
-        The pile whose scattered wave is in the sea.
+    pile : Pile or None
+        The pile whose scattered wave is in the sea (:class:`boatland.sea.pile.Pile`).
     hull_wetted : int
         Number of vertices of the wetted (below-waterline) part, the first ones of ``hull_vertices``.
     contacts : ContactGeometry
@@ -120,7 +120,7 @@ class Scene:
     components: object = None
     ramp: object = None
     notes: list = field(default_factory=list)
-    pile: tuple | None = None          # (radius, x, y, water depth) when its scattered wave is in the sea
+    pile: object = None                # the Pile when its scattered wave is in the sea
     hull_wetted: int = -1              # -1: all of the hull
     contacts: ContactGeometry = field(default_factory=lambda: ContactGeometry.of(None))
 
@@ -200,7 +200,7 @@ class Scene:
 def sea_coefficients(cp, X, Y, pile=None) -> np.ndarray:
     r"""Complex elevation amplitudes (P, N) of the wave components at global points (X, Y):
     :math:`a_i e^{i(\varphi_i - k_i(x\cos\theta_i + y\sin\theta_i))}` in the open sea; beside a pile
-    ``(radius, x, y, depth)`` the total (incident + scattered, MacCamy–Fuchs) field of each component
+    (:class:`boatland.sea.pile.Pile`) the total (incident + scattered, MacCamy–Fuchs) field of each component
     (:func:`boatland.waves.diffraction.cylinder_field`), 0 inside the pile."""
     from boatland.waves.synthesis import component_phasors
 
@@ -210,7 +210,7 @@ def sea_coefficients(cp, X, Y, pile=None) -> np.ndarray:
 
     X = np.atleast_1d(np.asarray(X, dtype=float))
     Y = np.atleast_1d(np.asarray(Y, dtype=float))
-    radius, px, py, depth = pile
+    radius, (px, py), depth = pile
     out = np.zeros((X.size, cp.size), dtype=complex)
     waves = cp.omega > 0
     eta = cylinder_field(X - px, Y - py, np.zeros(X.size), cp.omega[waves], cp.theta[waves], radius, depth,
@@ -219,10 +219,11 @@ def sea_coefficients(cp, X, Y, pile=None) -> np.ndarray:
     return out
 
 
-def pile_of(scenario, db, model) -> tuple | None:
-    """``(radius, x, y, depth)`` of the pile whose scattered wave the trial feels, or None."""
-    p = scenario.pile(db) if model is not None else None
-    return None if p is None else (p[0], p[1][0], p[1][1], float(getattr(model, "water_depth", math.inf)))
+def pile_of(setup, model):
+    """The :class:`~boatland.sea.pile.Pile` whose scattered wave the trial feels (:attr:`Setup.pile`) in the
+    waves ``model`` (their water depth), or None."""
+    p = setup.pile if model is not None else None
+    return None if p is None else p._replace(water_depth=float(getattr(model, "water_depth", math.inf)))
 
 
 def hull_triangles(vertices: np.ndarray, faces: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -297,22 +298,26 @@ def _struts(geo: dict) -> list:
     return [tuple(s) if len(s) >= 5 else (*s[:3], PILE_BOTTOM, PILE_TOP) for s in geo.get("struts", [])]
 
 
-def scene_from_trial(scenario, db, start_pose, contacts, *, waves=True) -> Scene:
-    """The scene of a trial about to run (or re-read from a log); ``waves=False``: no sea surface."""
+def scene_from_trial(setup, contacts=None, *, waves=True, start_pose=None) -> Scene:
+    """The scene of a trial about to run (or re-read from a log) from its :class:`~boatland.landing.setup.Setup`
+    (``contacts``: the kernel's, :meth:`Setup.contacts` by default; ``start_pose``: the setup's by default);
+    ``waves=False``: no sea surface."""
     from boatland.trial.simulate import wave_start
 
-    geo = scene_metadata(scenario, contacts)
+    scenario, db = setup.scenario, setup.db
+    start_pose = setup.start_pose if start_pose is None else start_pose
+    geo = scene_metadata(scenario, setup.contacts() if contacts is None else contacts)
     v, tri, n_wet = hull_parts(db)
     comps, ramp = None, None
-    model = scenario.wave_model(db) if waves else None
+    model = setup.waves if waves else None
     if model is not None:
-        dt, n = scenario.time_step(db), scenario.n_steps(db)
+        dt, n = setup.dt, setup.n_steps
         comps = model.realise(scenario.simulation.seed, n * dt)
         t0, T = wave_start(scenario), scenario.simulation.start_ramp
         ramp = _Ramp(t0, T)
     return Scene(hull_vertices=v, hull_triangles=tri, monopile=tuple(geo.get("monopile", (0.0, 0.0, 0.0))),
                  struts=_struts(geo), fender_points=np.asarray(geo["fender_points"]),
-                 start_pose=tuple(start_pose), components=comps, ramp=ramp, pile=pile_of(scenario, db, model),
+                 start_pose=tuple(start_pose), components=comps, ramp=ramp, pile=pile_of(setup, model),
                  hull_wetted=n_wet, contacts=ContactGeometry.of(geo.get("contacts")))
 
 
@@ -339,17 +344,16 @@ def scene_from_metadata(meta: dict) -> Scene:
     geo = json.loads(meta.get("scene", "{}"))
     notes = []
     try:
-        from boatland.model.scenario import scenario_from_dict
-        from boatland.scenario_check import resolve_database
-        from boatland.trial.simulate import contact_arrays
+        from boatland.scenario.scenario import scenario_from_dict
+        from boatland.checks.files import resolve_database
+        from boatland.landing.setup import landing_setup
 
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             doc = json.loads(meta["scenario"])
             sc = scenario_from_dict(doc, source=meta.get("scenario_source", "<log>"),
                                     base_dir=meta.get("scenario_base_dir") or None)
-            db = resolve_database(sc)
-            return scene_from_trial(sc, db, start_pose, contact_arrays(sc, db))
+            return scene_from_trial(landing_setup(sc, resolve_database(sc)))
     except Exception as exc:  # noqa: BLE001 — any failure to rebuild only costs the hull mesh and the sea
         notes.append(f"scenario of the log not re-readable here ({type(exc).__name__}: {exc}); "
                      "showing a box hull and no sea surface")

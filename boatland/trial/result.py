@@ -9,11 +9,11 @@ from pathlib import Path
 import numpy as np
 
 from boatland.atomic import atomic_path
-from boatland.contact.fender import OFF, OPEN
 from boatland.conventions import DOF_NAMES, DOF_UNITS
-from boatland.model.scenario_parts import Incidents
-from boatland.trial.events import (SLID_OFF, Event, SlipEpisode, all_touching_fraction, column_abs_max, extract_events,
-                                   first_entry, first_exceedance, landing_offset, largest_single_slide,
+from boatland.scenario.parts import Incidents
+from boatland.trial.incidents import trial_incidents
+from boatland.trial.events import (Event, SlipEpisode, all_touching_fraction, column_abs_max, extract_events,
+                                   landing_offset, largest_single_slide,
                                    slip_episodes, slip_start_rows, worst_landing_offset)
 
 __all__ = ["Result", "TrialSeries", "SERIES"]
@@ -107,7 +107,9 @@ class Result(TrialSeries):
         exposure of a campaign's access is counted from here."""
         return self.settled_at + float(self.provenance.get("wave_ramp", 0.0))
 
-    def _settle_row(self) -> int:
+    @property
+    def settle_row(self) -> int:
+        """The first row at or after :attr:`settled_at`."""
         return int(np.searchsorted(self.t, self.settled_at - 1e-9))
 
     @cached_property
@@ -131,11 +133,6 @@ class Result(TrialSeries):
         rows.flags.writeable = counts.flags.writeable = False
         return rows, counts
 
-    def _first_entry(self, mode: int, k_start: int) -> float | None:
-        """Time of the first step at or after row ``k_start`` at which a contact enters ``mode`` (None: never)."""
-        k = first_entry(self.mode, mode, k_start)
-        return None if k < 0 else float(self.t[k])
-
     @cached_property
     def peak_motions(self) -> np.ndarray:
         """(6,) largest |x| of each DOF over the run [m, rad] (NaN where the run has a NaN), read only."""
@@ -152,32 +149,26 @@ class Result(TrialSeries):
         """(n, Nc) distance [m] of each fender point from where it landed after the settling (NaN while
         open, not yet caught, or settling): Grøtting's (2015) incident slip distance, see
         :func:`boatland.trial.events.landing_offset`."""
-        return landing_offset(self.mode, self.tpos, self._settle_row())
+        return landing_offset(self.mode, self.tpos, self.settle_row)
 
-    def _worst_offset(self) -> np.ndarray | None:
-        """Largest landing offset over the contacts per step (0 where none has landed); None without contacts."""
+    @cached_property
+    def worst_offset(self) -> np.ndarray | None:
+        """(n,) largest landing offset over the contacts per step [m] (0 where none has landed; see
+        :meth:`landing_offset`), read only; None without contacts."""
         if not self.mode.shape[1]:
             return None
-        return worst_landing_offset(self.mode, self.tpos, self._settle_row())
+        worst = worst_landing_offset(self.mode, self.tpos, self.settle_row)
+        worst.flags.writeable = False
+        return worst
+
+    @property
+    def incident_definitions(self) -> tuple:
+        """The incident definitions this trial reports (:func:`boatland.trial.incidents.trial_incidents`)."""
+        return trial_incidents(self.incidents, contacts=bool(self.mode.shape[1]))
 
     def incident_times(self) -> dict[str, float | None]:
-        """First time of each incident definition (None: did not happen)."""
-        return self._incident_times(self._worst_offset())
-
-    def _incident_times(self, worst: np.ndarray | None) -> dict[str, float | None]:
-        out: dict[str, float | None] = {}
-        slip_limits = self.incidents.slip_distance if self.incidents is not None else (0.1,)
-        roll_limits = self.incidents.roll_limit_deg if self.incidents is not None else ()
-        for limit in slip_limits:
-            out[f"slip > {limit:g} m"] = first_exceedance(self.t, worst, limit) if worst is not None else None
-        for limit in roll_limits:
-            out[f"roll > {limit:g}°"] = first_exceedance(self.t, self.x[:, 3], np.radians(limit))
-        if self.mode.shape[1]:   # contact lost: a contact opens; slid off: it goes off the landing
-            k0 = self._settle_row()
-            lost = [t for t in (self._first_entry(OPEN, k0), self._first_entry(OFF, k0)) if t is not None]
-            out["contact loss"] = min(lost) if lost else None
-            out[SLID_OFF] = self._first_entry(OFF, 0)
-        return out
+        """First time of each incident definition after the settling, by name (None: did not happen)."""
+        return {d.name: d.first_time(self) for d in self.incident_definitions}
 
     def slip_starts(self) -> list:
         """The fender's slip events after the settling: stick → slip of one or more contacts at the same
@@ -206,7 +197,7 @@ class Result(TrialSeries):
 
     @property
     def inputs(self) -> dict:
-        """What the trial was run with (:func:`boatland.trial.inputs.trial_inputs`): sea, direction, push, μ."""
+        """What the trial was run with (:func:`boatland.scenario.inputs.trial_inputs`): sea, direction, push, μ."""
         return dict(self.provenance.get("inputs", {}))
 
     def verdict(self):
@@ -221,10 +212,10 @@ class Result(TrialSeries):
         ``slip_events`` counts the fender's slip starts (contacts slipping at the same step once,
         :meth:`slip_starts`); ``contact_slip_events`` each contact's. The normal forces are those after
         the settling (:attr:`settled_at`; the whole run if it never touched after it)."""
-        k0 = self._settle_row()
+        k0 = self.settle_row
         rows, counts = self.slip_rows
         after = rows >= k0                             # the stick → slip events after the settling
-        worst = self._worst_offset()
+        worst = self.worst_offset
         touching = self.mode > 0
         landed = touching[k0:]                         # forces after the settling: not the first touch
         if not landed.any():
@@ -243,7 +234,7 @@ class Result(TrialSeries):
             "contact_fraction": float(all_touching_fraction(self.mode)) if self.mode.shape[1] else 0.0,
             "max_motions": {f"{n} [{'deg' if u == 'rad' else u}]": float(np.degrees(a) if u == "rad" else a)
                             for n, u, a in zip(DOF_NAMES, DOF_UNITS, self.peak_motions)},
-            "incidents": self._incident_times(worst),
+            "incidents": self.incident_times(),
             "provenance": self.provenance,
         }
         from boatland.trial.verdict import verdict

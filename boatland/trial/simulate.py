@@ -1,42 +1,41 @@
 """One landing trial: scenario + hydrodynamic database → integrated motions, contact forces, events.
 
-The service wires the validated :class:`~boatland.model.scenario.Scenario` to the kernels: radiation
-memory (:mod:`boatland.irf` through :func:`boatland.model.radiation.radiation_memory`), the wave
+The service wires the validated :class:`~boatland.scenario.scenario.Scenario` on its vessel
+(:class:`~boatland.landing.setup.Setup`: time step, start pose, contacts, wave model, pile) to the kernels:
+radiation memory (:mod:`boatland.irf` through :func:`boatland.vessel.radiation.radiation_memory`), the wave
 excitation on the RK4 half-step grid (:mod:`boatland.waves`), the thrust ramp, the fender contacts in
 the vessel's local frame, and the RK4 Cummins integrator with stick–slip contact
 (:func:`boatland.integrate.run_cummins`). It loads nothing from disk: the caller passes the database
-(``boatland.scenario_check.load_checked`` does both for files).
+(``boatland.checks.files.load_checked`` does both for files).
 """
 
 from __future__ import annotations
 
 import threading
 import time
-import warnings
 from collections.abc import Callable, Sequence
 from dataclasses import replace
 
 import numpy as np
 
 from boatland import __version__
-from boatland.contact.fender import Contacts, contact_set, no_contacts
+from boatland.checks.memory import check_radiation
 from boatland.errors import BoatlandInputError
 from boatland.integrate.cummins import OUTCOME_STATUSES
-from boatland.irf.impulse import IRFSettings
-from boatland.model.landed import check_memory, lumped_fender
-from boatland.model.motion import MotionArrays, compile_motion
-from boatland.model.pile_diffraction import scattered_tables
-from boatland.model.radiation import RadiationMemory, default_dt, radiation_memory
-from boatland.model.scenario import Scenario, ScenarioWarning
-from boatland.model.hydrodb import HydroDB
+from boatland.landing.setup import Setup, landing_setup
 from boatland.reproducible import pinned
+from boatland.scenario.inputs import trial_inputs
+from boatland.scenario.scenario import Scenario
+from boatland.sea.pile import scattered_tables
 from boatland.trial.events import extract_events
-from boatland.trial.inputs import trial_inputs
+from boatland.trial.motion import MotionArrays, compile_motion
 from boatland.trial.result import SERIES, Result
 from boatland.trial.sink import StepBlock, TrialInfo, TrialSink
+from boatland.vessel.database import HydroDB
+from boatland.vessel.radiation import RadiationMemory
 
-__all__ = ["simulate", "prepare_memory", "check_radiation", "motion_arrays", "pile_tables", "pile_table_request",
-           "contact_arrays", "thrust_series", "wave_ramp", "wave_start", "exposure_start", "BlowUpError"]
+__all__ = ["simulate", "motion_arrays", "pile_tables", "pile_table_request", "thrust_series", "wave_ramp",
+           "wave_start", "exposure_start", "BlowUpError"]
 
 #: Runaway limits: no CTV landing survives these (linear hydrodynamics is meaningless beyond them).
 LIMIT_TRANS, LIMIT_ROT = 50.0, np.radians(60.0)
@@ -53,26 +52,6 @@ class BlowUpError(RuntimeError):
                  f"pitch {np.degrees(x[4]):.3g}°, yaw {np.degrees(x[5]):.3g}°")
         super().__init__(f"integration stopped at t = {result.t[k]:.2f} s: {result.message} ({state}); "
                          f"likely cause: {cause}")
-
-
-def prepare_memory(scenario: Scenario, db: HydroDB) -> RadiationMemory:
-    """Radiation memory for the scenario: IRFs over the scenario's memory length (and the state-space
-    fit when the scenario asks for it)."""
-    rad = scenario.radiation
-    settings = IRFSettings(t_max=rad.memory, dt=default_dt(db.omega[-1]), tail=rad.tail, taper=rad.taper)
-    return radiation_memory(db, settings, fit=rad.method == "state_space")
-
-
-def check_radiation(scenario: Scenario, db: HydroDB, memory: RadiationMemory, dt: float) -> None:
-    """Refuse a radiation memory that would make a landed natural mode grow
-    (:func:`boatland.model.landed.check_memory`); warn where its damping is negative but the mode stays
-    damped. Done once per memory (a campaign checks each case before its trials)."""
-    check = check_memory(scenario, db, memory, dt)
-    if check.problems:
-        key, msg = check.problems[0]
-        raise BoatlandInputError(f"{scenario.source}: {key}: {msg}")
-    for key, msg in check.warnings:
-        warnings.warn(f"{scenario.source}: {key}: {msg}", ScenarioWarning, stacklevel=3)
 
 
 def thrust_series(scenario: Scenario, dt: float, n_steps: int) -> np.ndarray:
@@ -113,73 +92,44 @@ def wave_ramp(scenario: Scenario, dt: float, n_steps: int) -> np.ndarray:
     return r
 
 
-def contact_arrays(scenario: Scenario, db: HydroDB) -> Contacts:
-    """The kernel's :class:`~boatland.contact.fender.Contacts` in the local frame (origin at the reference
-    point's start position, axes along the vessel at rest): fender lines along the body y axis, the
-    landing's tubes, the normal and shear laws (the shear damping from its ratio of critical, with
-    the vessel of ``db``: :func:`boatland.model.scenario_checks.contact_period`)."""
-    if scenario.fender is None or scenario.landing is None:
-        return no_contacts()
-    from boatland.model.scenario_checks import contact_period
-
-    x0, y0, psi = scenario.start_pose()
-    c, s = np.cos(psi), np.sin(psi)
-    to_local = np.array([[c, s], [-s, c]])  # global → local rotation (by −ψ)
-    fender, struts = scenario.fender, scenario.landing.struts
-    axes = (np.array([st.position for st in struts], dtype=float) - [x0, y0]) @ to_local.T
-    normals = scenario.landing.normals @ to_local.T
-    radius = np.array([st.diameter / 2 for st in struts])
-    if lumped_fender(scenario):   # compressed past the tubes' axes: a plate at their front (the thesis's plane)
-        axes, radius = axes + radius[:, None] * normals, np.full(len(struts), np.inf)
-    c_t = contact_period(scenario, db).shear_damping if not fender.rigid else 0.0
-    return contact_set(fender.points_array, axes, radius, normals, direction=(0.0, 1.0, 0.0),
-                       half_width=fender.width / 2, bottom=[st.bottom for st in struts],
-                       top=[st.top for st in struts], stiffness=fender.stiffness, damping=fender.damping,
-                       shear_stiffness=fender.shear_stiffness, shear_damping=c_t, mu_s=fender.mu_s,
-                       mu_k=fender.mu_k, k_v=fender.k_v, v_ref=fender.v_ref, delta=fender.delta,
-                       sideways=fender.sideways)
-
-
-def motion_arrays(scenario: Scenario, db: HydroDB, memory: RadiationMemory) -> MotionArrays:
+def motion_arrays(setup: Setup, memory: RadiationMemory) -> MotionArrays:
     """The kernel arrays of the scenario's radiation method, memory length and time step
-    (:func:`boatland.model.motion.compile_motion`): the same for every seed, so a campaign compiles them once
+    (:func:`boatland.trial.motion.compile_motion`): the same for every seed, so a campaign compiles them once
     per case and passes them to :func:`simulate` (``arrays``)."""
+    rad = setup.scenario.radiation
     try:
-        return compile_motion(db, memory, scenario.time_step(db), method=scenario.radiation.method,
-                              memory_length=scenario.radiation.memory)
+        return compile_motion(setup.db, memory, setup.dt, method=rad.method, memory_length=rad.memory)
     except ValueError as exc:  # a state-space pole too fast for dt: the scenario's choice, not a bug
-        raise BoatlandInputError(f"{scenario.source}: simulation.dt: {exc}") from None
+        raise BoatlandInputError(f"{setup.source}: simulation.dt: {exc}") from None
 
 
-def pile_tables(scenario: Scenario, db: HydroDB) -> list:
+def pile_tables(setup: Setup) -> list:
     """The ω tables of the pile's scattered wave a trial of ``scenario`` interpolates
-    (:class:`boatland.model.pile_diffraction.ScatteredTable`; none without waves, a pile or for a
+    (:class:`boatland.sea.pile.ScatteredTable`; none without waves, a pile or for a
     short-crested sea). They depend on the layout and the sea's directions, not on the seed: a campaign
     makes those of all its cases once (:func:`pile_table_request`,
-    :func:`boatland.model.pile_diffraction.make_tables`) and ships them to its workers
-    (:func:`boatland.model.pile_diffraction.remember_tables`)."""
-    request = pile_table_request(scenario, db)
-    return [] if request is None else scattered_tables(db, *request)
+    :func:`boatland.sea.pile.make_tables`) and ships them to its workers
+    (:func:`boatland.sea.pile.remember_tables`)."""
+    request = pile_table_request(setup)
+    return [] if request is None else scattered_tables(setup.db, *request)
 
 
-def pile_table_request(scenario: Scenario, db: HydroDB):
-    """The arguments of the tables :func:`pile_tables` makes (:class:`boatland.model.pile_diffraction.TableRequest`),
+def pile_table_request(setup: Setup):
+    """The arguments of the tables :func:`pile_tables` makes (:class:`boatland.sea.pile.TableRequest`),
     or None: a campaign asks every case and makes the tables of a layout together
-    (:func:`boatland.model.pile_diffraction.make_tables`)."""
-    waves = scenario.wave_model(db)
-    pile = scenario.pile(db)
-    if waves is None or pile is None:
+    (:func:`boatland.sea.pile.make_tables`)."""
+    if setup.waves is None or setup.pile is None:
         return None
-    x0, y0, psi = scenario.start_pose()
-    return waves.pile_table_request(seed=scenario.simulation.seed, dt=scenario.time_step(db),
-                                    n_steps=scenario.n_steps(db), x0=x0, y0=y0, heading_deg=float(np.degrees(psi)),
-                                    pile=pile)
+    x0, y0, psi = setup.start_pose
+    return setup.waves.pile_table_request(seed=setup.scenario.simulation.seed, dt=setup.dt, n_steps=setup.n_steps,
+                                          x0=x0, y0=y0, heading_deg=float(np.degrees(psi)), pile=setup.pile)
 
 
 @pinned
 def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None = None,
              arrays: MotionArrays | None = None, progress: Callable[[int, int], None] | None = None,
-             sinks: Sequence[TrialSink] = (), progress_every: float = 0.1, waves=None) -> Result:
+             sinks: Sequence[TrialSink] = (), progress_every: float = 0.1, waves=None,
+             setup: Setup | None = None) -> Result:
     r"""Run one landing trial.
 
     Equation of motion (DESIGN.md §1; Cummins 1962, seed 000 eq. 3.40; contact: seed 001 §2.5, §3.4):
@@ -191,13 +141,13 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
     Parameters
     ----------
     scenario : Scenario
-        Validated scenario (its database checks are the caller's: ``scenario.check_against(db)``).
+        Validated scenario (its database checks are the caller's: :func:`boatland.checks.check`).
     db : HydroDB
         The vessel's database (with a mass matrix).
     memory : RadiationMemory, optional
         Reuse IRFs / state-space fit across trials of a campaign (must match the scenario's settings;
-        the caller checks it once with :func:`check_radiation`). Without it (and without ``arrays``) the
-        memory is made and checked here.
+        the caller checks it once with :func:`boatland.checks.memory.check_radiation`). Without it (and
+        without ``arrays``) the memory is made and checked here.
     arrays : MotionArrays, optional
         The kernel arrays compiled from the scenario's checked memory (:func:`motion_arrays`), reused
         across trials; given, ``memory`` is not used.
@@ -209,11 +159,13 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
         Receive the trial as it runs, in blocks of about one second of simulated time
         (:mod:`boatland.trial.sink`): a logger writes while the kernel integrates.
     waves : wave model, optional
-        Waves to use instead of the scenario's sea (``scenario.wave_model(db)``), with the same interface
-        (``excitation``, ``realise``) — e.g. a :class:`~boatland.model.gaussian_sea.GaussianSea` driven by
+        Waves to use instead of the scenario's sea (:attr:`Setup.waves`), with the same interface
+        (``excitation``, ``realise``) — e.g. a :class:`~boatland.sea.gaussian.GaussianSea` driven by
         given standard-normal coefficients, so that the trial runs on exactly the sea a rare-event
         sampler chose (:mod:`boatland.campaign.isee`). The scenario still sets everything else (its
         sea's ramp, the monopile's scattered wave). Its ``digest()`` goes into the provenance.
+    setup : Setup, optional
+        ``landing_setup(scenario, db)``, when the caller has made it already.
 
     Returns
     -------
@@ -226,17 +178,17 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
         NaN or runaway motion: the partial result is attached, nothing pretends success.
     """
     wall0 = time.perf_counter()
-    dt = scenario.time_step(db)
-    n = scenario.n_steps(db)
+    setup = landing_setup(scenario, db) if setup is None else setup
+    dt, n = setup.dt, setup.n_steps
     if arrays is None:
         if memory is None:
-            memory = prepare_memory(scenario, db)
-            check_radiation(scenario, db, memory, dt)
-        arrays = motion_arrays(scenario, db, memory)
-    x0g, y0g, psi = scenario.start_pose()
+            memory = setup.memory()
+            check_radiation(setup, memory)
+        arrays = motion_arrays(setup, memory)
+    x0g, y0g, psi = setup.start_pose
     override = waves is not None
     if not override:
-        waves = scenario.wave_model(db)
+        waves = setup.waves
     elif scenario.sea is None:
         raise BoatlandInputError(f"{scenario.source}: waves given for a scenario without a sea: its [sea] sets the "
                                  "ramp and the pile's scattered wave")
@@ -244,13 +196,13 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
         F = np.zeros((2 * n + 1, 6))
     else:
         F = waves.excitation(db, seed=scenario.simulation.seed, dt=dt, n_steps=n, x0=x0g, y0=y0g,
-                             heading_deg=float(np.degrees(psi)), ramp_time=0.0, pile=scenario.pile(db))
+                             heading_deg=float(np.degrees(psi)), ramp_time=0.0, pile=setup.pile)
         r = wave_ramp(scenario, dt, n)
         k = int(np.flatnonzero(r != 1.0)[-1]) + 1 if np.any(r != 1.0) else 0   # rows after k: × 1 (unchanged)
         F[:k] *= r[:k, None]
     thrust = thrust_series(scenario, dt, n)
-    Bv, Bq = scenario.additional_damping(db)
-    contacts = contact_arrays(scenario, db)
+    Bv, Bq = setup.additional_damping()
+    contacts = setup.contacts()
     r_p = scenario.thrust.position if scenario.thrust is not None else (0.0, 0.0, 0.0)
     kwargs = dict(F_ext=F, thrust=thrust, r_p=r_p, x0=scenario.initial.displacement, v0=scenario.initial.velocity,
                   Bv=np.diag(Bv), Bq=np.diag(Bq), contacts=contacts, limit_trans=LIMIT_TRANS, limit_rot=LIMIT_ROT)
@@ -267,8 +219,7 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
     if progress is None and not sinks:
         out = arrays.run(dt, n, **kwargs)
     else:
-        info = TrialInfo(scenario=scenario, db=db, dt=dt, n_steps=n, start_pose=(x0g, y0g, psi), contacts=contacts,
-                         waves=waves, provenance=dict(provenance))
+        info = TrialInfo(setup=setup, contacts=contacts, waves=waves, provenance=dict(provenance))
         out = _run_watched(arrays, dt, n, kwargs, progress, sinks, info, F, thrust, progress_every)
     t = out["t"]
     k = len(t)
@@ -281,7 +232,7 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
     for sink in sinks:
         sink.finish(result)
     if out["status"] not in OUTCOME_STATUSES:
-        raise BlowUpError(result, _likely_cause(scenario, db, dt, result))
+        raise BlowUpError(result, _likely_cause(setup, result))
     return result
 
 
@@ -358,12 +309,11 @@ def _send(sinks, live: dict, F, thrust, dt: float, k0: int, k1: int) -> None:
         sink.steps(blk)
 
 
-def _likely_cause(scenario, db, dt, result) -> str:
+def _likely_cause(setup: Setup, result) -> str:
     x = result.x[-1]
-    if scenario.fender is not None:
-        from boatland.model.scenario_checks import contact_period
-
-        cp = contact_period(scenario, db)
+    dt, db = setup.dt, setup.db
+    cp = setup.contact_period
+    if cp is not None:
         if dt > 2 * cp.dt_limit:
             return (f"dt = {dt:g} s is large for the fender's contact modes (normal {cp.period:.3g} s, stuck shear "
                     f"{cp.shear_period:.3g} s): use dt ≤ {cp.dt_limit:.3g} s or a softer fender")

@@ -16,8 +16,9 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Protocol, runtime_checkable
 
-from boatland.model.hydrodb import HydroDB
-from boatland.model.scenario import Scenario
+from boatland.landing.setup import Setup
+from boatland.vessel.database import HydroDB
+from boatland.scenario.scenario import Scenario
 from boatland.trial.events import Event
 from boatland.trial.result import TrialSeries
 
@@ -30,31 +31,45 @@ class TrialInfo:
 
     Attributes
     ----------
-    scenario : Scenario
-    db : HydroDB
-    dt : float
-        Time step [s]; ``n_steps`` steps, rows 0 … n_steps.
-    n_steps : int
-    start_pose : (x0, y0, psi)
-        Global position [m] of the reference point at rest and the heading [rad]: the local frame of
-        the arrays (x, tpos) is this pose's (DESIGN.md §2).
+    setup : Setup
+        The scenario on its vessel (:class:`boatland.landing.setup.Setup`); ``scenario``, ``db``, ``dt``,
+        ``n_steps`` and ``start_pose`` are read from it — the start pose (x0, y0, psi) is the global
+        position [m] of the reference point at rest and the heading [rad]: the local frame of the arrays
+        (x, tpos) (DESIGN.md §2).
     contacts : tuple
         ``(P, S, N, TH, CF, DF, MU, sideways)`` in the local frame (body points, plane points, normals,
         horizontal tangents, ...), as the kernel gets them.
     waves : object or None
-        The scenario's wave model (``scenario.wave_model(db)``) — e.g. for the elevation at the bow.
+        The waves of the trial (the scenario's, :attr:`Setup.waves`, or those it was given) — e.g. for the
+        elevation at the bow.
     provenance : dict
         boatland version, scenario name and hash, seed, dt, radiation method, ...
     """
 
-    scenario: Scenario
-    db: HydroDB
-    dt: float
-    n_steps: int
-    start_pose: tuple
+    setup: Setup
     contacts: tuple
     waves: object
     provenance: dict = field(default_factory=dict)
+
+    @property
+    def scenario(self) -> Scenario:
+        return self.setup.scenario
+
+    @property
+    def db(self) -> HydroDB:
+        return self.setup.db
+
+    @property
+    def dt(self) -> float:
+        return self.setup.dt
+
+    @property
+    def n_steps(self) -> int:
+        return self.setup.n_steps
+
+    @property
+    def start_pose(self) -> tuple:
+        return self.setup.start_pose
 
 
 @dataclass(frozen=True, eq=False)

@@ -21,7 +21,8 @@ from dataclasses import dataclass
 
 from boatland.integrate.cummins import OUTCOME_STATUSES
 from boatland.trial.events import SLID_OFF, Event
-from boatland.trial.inputs import inputs_text
+from boatland.trial.incidents import ContactLoss, RollAbove, SlipDistance, parse_incident
+from boatland.scenario.inputs import inputs_text
 
 __all__ = ["Verdict", "verdict", "MergedEvent", "merge_events", "RESOLUTION", "rounded", "fmt_force", "fmt_length",
            "fmt_angle", "fmt_time"]
@@ -171,7 +172,7 @@ class Verdict:
         "HELD …" / "SLIPPED at t = … s, slid … m (…)" and the like; ``slid`` is the largest distance of a
         fender point from where it landed (the incident distance).
     inputs : dict
-        :func:`boatland.trial.inputs.trial_inputs` of the trial (empty if unknown).
+        :func:`boatland.scenario.inputs.trial_inputs` of the trial (empty if unknown).
     t : float or None
         When it happened [s]: the start of the slide that crossed the threshold, the slide off, the loss
         of contact, the roll exceedance; None for "held".
@@ -210,8 +211,10 @@ def verdict(result, summary: dict | None = None) -> Verdict:
     if result.status not in OUTCOME_STATUSES:
         return Verdict("failed", f"FAILED: the integration stopped at {fmt_time(float(result.t[-1]))} "
                                  f"({result.message})", inputs, float(result.t[-1]), inc)
-    slip_names = sorted((k for k in inc if k.startswith("slip >")), key=lambda k: float(k[6:].split()[0]))
-    roll_names = sorted((k for k in inc if k.startswith("roll >")), key=lambda k: float(k[6:].rstrip("°")))
+    kinds = {k: parse_incident(k) for k in inc}
+    slip_names = sorted((k for k, d in kinds.items() if isinstance(d, SlipDistance)), key=lambda k: kinds[k].distance)
+    roll_names = sorted((k for k, d in kinds.items() if isinstance(d, RollAbove)), key=lambda k: kinds[k].limit_deg)
+    loss = ContactLoss().name
     slid = s["max_slip_distance"]
     exposure = float(result.t[-1]) - result.settled_at
     others = []
@@ -234,16 +237,16 @@ def verdict(result, summary: dict | None = None) -> Verdict:
         t = float(starts[-1]) if starts.size else t_cross
         head = f"SLIPPED at {fmt_time(t)}, slid {fmt_length(slid)} ({first} at {fmt_time(t_cross)})" + also({first})
         return Verdict("slipped", head, inputs, t, inc)
-    if inc.get("contact loss") is not None:
-        t = inc["contact loss"]
-        return Verdict("lost contact", f"LOST CONTACT at {fmt_time(t)}" + also({"contact loss"}), inputs, t, inc)
+    if inc.get(loss) is not None:
+        t = inc[loss]
+        return Verdict("lost contact", f"LOST CONTACT at {fmt_time(t)}" + also({loss}), inputs, t, inc)
     rolled = [k for k in roll_names if inc[k] is not None]
     if rolled:
         t = inc[rolled[0]]
-        return Verdict("rolled", f"ROLLED past {rolled[0][7:]} at {fmt_time(t)} (the fender held)" + also({rolled[0]}),
+        return Verdict("rolled", f"ROLLED past {kinds[rolled[0]].limit_deg:g}° at {fmt_time(t)} (the fender held)" + also({rolled[0]}),
                        inputs, t, inc)
     n = s["slip_events"]
-    limit = slip_names[0][7:] if slip_names else None
+    limit = f"{kinds[slip_names[0]].distance:g} m" if slip_names else None
     bits = [f"for {exposure:.0f} s of waves" if exposure > 0 else "throughout"]
     if n:
         bits.append(f"{n} short slip{'s' if n != 1 else ''}, never more than {fmt_length(slid)} from where it "

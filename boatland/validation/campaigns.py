@@ -61,7 +61,7 @@ def run_study(campaign_file: Path, store: Path, *, workers: int = 2, progress=No
     """Run a campaign file into ``store``; returns (campaign, trial table, statistics)."""
     from boatland.campaign import load_campaign, run_campaign
     from boatland.campaign.report import read_store
-    from boatland.scenario_check import load, resolve_database
+    from boatland.checks.files import load, resolve_database
 
     c = load_campaign(campaign_file, load_scenario=load)
     with warnings.catch_warnings():
@@ -93,12 +93,15 @@ def screening_probability(scenario, db, hs: float, *, access: float, Tp: float, 
     """The frequency-domain screening's probability of an incident per access of ``access`` s for
     ``scenario`` (its landing, fender, thrust and spectrum shape) at H_s ``hs``, peak period ``Tp`` and
     relative heading ``heading`` (Wu 2014; Grøtting 2015 eq. 3.38) — what a campaign stores beside its cases."""
-    from boatland.freqdomain.screening import LandingSetup, sea_response
+    from boatland.freqdomain.landing import LandingSetup
+    from boatland.freqdomain.screening import sea_response
+    from boatland.landing.setup import landing_setup
 
     s = scenario.replace({"sea.Hs": hs, "sea.Tp": Tp, "sea.relative_direction_deg": heading})
-    setup = LandingSetup.from_scenario(s, db)
-    return sea_response(db, setup, s.sea.waves.parts, access_duration=access,
-                        water_depth=getattr(s.wave_model(db), "water_depth", None)).p_access
+    setup = landing_setup(s, db)
+    landing = LandingSetup.from_scenario(s, db, setup=setup)
+    return sea_response(db, landing, s.sea.waves.parts, access_duration=access,
+                        water_depth=getattr(setup.waves, "water_depth", None)).p_access
 
 
 def hs_at_probability(scenario, db, p: float, *, access: float, Tp: float, heading: float,
@@ -131,7 +134,7 @@ def validation_scenario_path() -> Path:
 
 
 def _default():
-    from boatland.scenario_check import load_checked
+    from boatland.checks.files import load_checked
 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
@@ -234,7 +237,7 @@ def run_trends(ctx: Context) -> Outcome:
                      f"× {hs:g} m; thrusts {thrust / 1e3:g} kN (the scenario's) and {2 * thrust / 1e3:g} kN.")
     # the frequency domain's view of the same trends (the screening's limiting H_s, as `boatland screen`)
     from boatland.freqdomain import screening_grid
-    from boatland.freqdomain.screening import LandingSetup
+    from boatland.freqdomain.landing import LandingSetup
 
     setup = LandingSetup.from_scenario(scenario, db)
     grid = screening_grid(db, setup, np.array(PERIODS), np.array(HEADINGS), sea=scenario.sea.waves.parts[0],

@@ -28,7 +28,7 @@ MU, F0, W = 0.5, 1.5e4, 1.0
 
 def block(C=None):
     """A translating block of mass :data:`BLOCK_MASS` (rotations frozen by 1e9 inertias), no memory."""
-    from boatland.model.motion import MotionArrays
+    from boatland.trial.motion import MotionArrays
 
     m = BLOCK_MASS
     Mt = np.diag([m, m, m, 1e9, 1e9, 1e9])

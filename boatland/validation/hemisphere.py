@@ -45,7 +45,7 @@ def hulme_table(refdata: Path) -> np.ndarray:
 
 
 def bemio_sphere(refdata: Path):
-    """HydroChrono's WAMIT hemisphere (BEMIO HDF5) as a :class:`~boatland.model.hydrodb.HydroDB`."""
+    """HydroChrono's WAMIT hemisphere (BEMIO HDF5) as a :class:`~boatland.vessel.database.HydroDB`."""
     from boatland.hydro.bemio import read_bemio
 
     return read_bemio(Path(refdata) / BEMIO_FILE)
@@ -144,12 +144,12 @@ def irf_case(refdata: Path):
     """The hemisphere's heave IRF from boatland and the one BEMIO stored in the same file.
 
     Returns (db, memory, t_ref, K33_ref [N/m/s²... ρ-scaled]); the memory is boatland's
-    (:func:`boatland.model.radiation.radiation_memory`, 15 s at 0.015 s, no state-space fit).
+    (:func:`boatland.vessel.radiation.radiation_memory`, 15 s at 0.015 s, no state-space fit).
     """
     import h5py
 
     from boatland.irf.impulse import IRFSettings
-    from boatland.model.radiation import radiation_memory
+    from boatland.vessel.radiation import radiation_memory
 
     path = Path(refdata) / BEMIO_FILE
     db = bemio_sphere(refdata)

@@ -49,7 +49,7 @@ VESSEL = "ctv24"
 def hinge_scenario(T, relative_direction_deg, memory, duration, yaw_damping=0.0, shear="rigid"):
     """One strut straight ahead of the vessel (its contact plane faces −x), the fender just touching it;
     ``shear`` the rubber's shear stiffness ("rigid", or N/m with the default 5 % of critical damping)."""
-    from boatland.model.scenario import scenario_from_dict
+    from boatland.scenario.scenario import scenario_from_dict
 
     return scenario_from_dict({
         "name": f"hinge_T{T:g}_{relative_direction_deg:g}",
@@ -95,11 +95,13 @@ def compare_hinge(db, s) -> HingeComparison:
     """Run scenario ``s`` on ``db`` and compare with :func:`boatland.freqdomain.hinged_rao`."""
     from boatland.contact.fender import STICK
     from boatland.freqdomain import first_harmonic, hinged_rao
-    from boatland.model.landed import normal_follows
-    from boatland.trial.simulate import contact_arrays, simulate
+    from boatland.landing.law import normal_follows
+    from boatland.landing.setup import landing_setup
+    from boatland.trial.simulate import simulate
     from boatland.waves.dispersion import wavenumber_scalar
 
-    r = simulate(s, db)
+    setup = landing_setup(s, db)
+    r = simulate(s, db, setup=setup)
     wave = s.sea.waves
     w = wave.omega
     x0, y0, psi = s.start_pose()
@@ -107,12 +109,12 @@ def compare_hinge(db, s) -> HingeComparison:
     k = wavenumber_scalar(w, db.water_depth, db.g)
     th = np.radians(wave.direction_deg)
     a = wave.H / 2 * np.exp(1j * (np.radians(wave.phase_deg) - k * (x0 * np.cos(th) + y0 * np.sin(th))))
-    ct = contact_arrays(s, db)
+    ct = setup.contacts()
     shear = {} if s.fender.rigid else {"shear_stiffness": ct.KT[0], "shear_damping": ct.CT[0]}
     follows = normal_follows(s.fender.width, ct.RT, THRUST / STIFFNESS)   # the fender's face turns with the yaw
     fd = hinged_rao(db, w, ct.P[0], beta_deg=wave.direction_deg - np.degrees(psi), normal=ct.N0[0],
                     stiffness=STIFFNESS, damping=DAMPING, thrust=THRUST, thrust_position=THRUST_AT,
-                    additional_damping=s.additional_damping(db)[0], normal_follows=follows["follows"],
+                    additional_damping=setup.additional_damping()[0], normal_follows=follows["follows"],
                     tube_radius=follows.get("radius", np.inf), **shear)
     window = r.t >= r.t[-1] - PERIODS * 2 * np.pi / w
     td = np.array([first_harmonic(r.t, y, w, PERIODS) for y in (r.fn[:, 0], r.ft[:, 0, 0], r.ft[:, 0, 1])])

@@ -34,8 +34,8 @@ def hemisphere_with_mass(refdata: Path, t_max: float = 30.0, fit: bool = False):
     gyration 2/5·A², and its radiation memory (``t_max`` s at 0.01 s). Returns (db, memory)."""
     from boatland.hydro.bemio import read_bemio
     from boatland.irf.impulse import IRFSettings
-    from boatland.model.hydrodb import rigid_body_mass_matrix
-    from boatland.model.radiation import radiation_memory
+    from boatland.vessel.database import rigid_body_mass_matrix
+    from boatland.vessel.radiation import radiation_memory
 
     db = read_bemio(Path(refdata) / "bemio_sphere" / "sphere.h5")
     m = db.rho * db.disp_vol
@@ -59,8 +59,8 @@ def regular_wave_response(db, memory, w: float, H: float = 0.2):
         The integrator's status (0 completed).
     """
     from boatland.freqdomain import first_harmonic, free_rao
-    from boatland.model.motion import compile_motion
-    from boatland.model.seastate import RegularWave
+    from boatland.trial.motion import compile_motion
+    from boatland.sea.states import RegularWave
 
     dt = min(0.05, 2 * np.pi / w / 60)
     T = 2 * np.pi / w
@@ -76,7 +76,7 @@ def regular_wave_response(db, memory, w: float, H: float = 0.2):
 def free_decays(db, memory, x0, dt: float, n: int, memory_length: float | None = None) -> dict:
     """Free decay from ``x0`` with the convolution and with the state-space memory:
     ``{"convolution": run, "state_space": run}`` (the integrator's output dicts)."""
-    from boatland.model.motion import compile_motion
+    from boatland.trial.motion import compile_motion
 
     kw = {} if memory_length is None else {"memory_length": memory_length}
     return {m: compile_motion(db, memory, dt, method=m, **kw).run(dt, n, x0=list(x0))
@@ -147,7 +147,7 @@ def run_raos(ctx: Context) -> Outcome:
 def run_state_space(ctx: Context) -> Outcome:
     """Case state-space-vs-convolution: free decays of the hemisphere and of ctv24 with both memories."""
     from boatland.hydro.builtin import load_builtin
-    from boatland.model.radiation import radiation_memory
+    from boatland.vessel.radiation import radiation_memory
 
     db_h, mem_h = hemisphere_with_mass(ctx.refdata, fit=True)
     hemi = free_decays(db_h, mem_h, HEMISPHERE_X0, 0.05, 800)

@@ -8,6 +8,6 @@ records), :mod:`~boatland.waves.synthesis` (elevation, harmonic sums on time gri
 :mod:`~boatland.waves.nufft`, a non-uniform FFT for long records),
 :mod:`~boatland.waves.excitation` (F_exc(t) through X(ω, β)),
 :mod:`~boatland.waves.diffraction` (MacCamy–Fuchs field around the monopile). The validated model
-objects that compile into these arrays are in :mod:`boatland.model.seastate` (and
-:mod:`boatland.model.pile_diffraction` for the pile's scattered wave on the hull).
+objects that compile into these arrays are in :mod:`boatland.sea.states` (and
+:mod:`boatland.sea.pile` for the pile's scattered wave on the hull).
 """

@@ -30,9 +30,9 @@ Directions
     itself — and a component outside gets **NaN**, never a value interpolated across the part of
     the circle the table does not cover. A half-circle table of a port–starboard symmetric hull
     is completed to the circle before it gets here
-    (:func:`boatland.model.wave_directions.full_circle_excitation`), and the model layer refuses
+    (:func:`boatland.vessel.directions.full_circle_excitation`), and the model layer refuses
     directions outside any other table with a message first
-    (:func:`boatland.model.wave_directions.direction_problem`).
+    (:func:`boatland.vessel.directions.direction_problem`).
 Outside the frequency band
     Above ω_max of the table the excitation is **zero** (and counted: ``n_above``; the model layer
     warns with the variance share). Below the first tabulated frequency X is held at its value
@@ -253,7 +253,7 @@ def excitation_series(components, omega, beta_deg, X, x0: float, y0: float, psi:
         Duration of the half-cosine start-up ramp [s], measured from t = 0; 0 for none.
     X_extra : ndarray of complex, shape (m, N), optional
         More excitation per unit amplitude at each component, referred like X (e.g. the monopile's
-        scattered wave, :func:`boatland.model.pile_diffraction.pile_scattered_components`); added to
+        scattered wave, :func:`boatland.sea.pile.pile_scattered_components`); added to
         the interpolated X before the sum (zero above the table's band, like X).
 
     Returns

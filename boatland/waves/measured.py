@@ -20,7 +20,7 @@ The gauge stands at (x_g, y_g) and the waves travel towards θ (long-crested): e
 :math:`\varphi_m \leftarrow \varphi_m + k_m (x_g\cos\theta + y_g\sin\theta)`, so that
 η(x_g, y_g, t) is the record and η at the vessel follows from the same sum.
 
-The CSV reader lives in :mod:`boatland.model.records` (kernels do no I/O).
+The CSV reader lives in :mod:`boatland.sea.records` (kernels do no I/O).
 """
 
 from __future__ import annotations

@@ -36,7 +36,7 @@ import numpy as np
 
 from boatland.waves.nufft import harmonic_sum_nufft, nufft_grid
 
-__all__ = ["REANCHOR", "METHODS", "harmonic_sum", "harmonic_series", "synthesis_costs", "synthesis_method",
+__all__ = ["REANCHOR", "METHODS", "harmonic_sum", "harmonic_sum_kernel", "harmonic_series", "synthesis_costs", "synthesis_method",
            "elevation", "elevation_series", "component_phasors"]
 
 #: Summation methods of :func:`harmonic_series`.
@@ -49,7 +49,9 @@ _FAST = {"reassoc", "contract"}  # lets LLVM vectorise the component sums; deter
 
 
 @numba.njit(cache=True, fastmath=_FAST)
-def _harmonic_sum(omega, c_re, c_im, t0, h, out):
+def harmonic_sum_kernel(omega, c_re, c_im, t0, h, out):
+    """The compiled core of :func:`harmonic_sum`: ``out[n, j] = Σ_i Re{(c_re + i c_im)[j, i] e^{iω_i (t0 + n h)}}``
+    by phasor recurrence, re-anchored exactly every :data:`REANCHOR` steps."""
     n_t, m = out.shape
     N = omega.size
     zr = np.empty(N)
@@ -96,7 +98,7 @@ def harmonic_sum(omega, c, t0: float, h: float, n: int) -> np.ndarray:
     """
     c = np.atleast_2d(np.asarray(c, dtype=complex))
     out = np.empty((int(n), c.shape[0]))
-    _harmonic_sum(np.ascontiguousarray(omega, dtype=float), np.ascontiguousarray(c.real),
+    harmonic_sum_kernel(np.ascontiguousarray(omega, dtype=float), np.ascontiguousarray(c.real),
                   np.ascontiguousarray(c.imag), float(t0), float(h), out)
     return out
 

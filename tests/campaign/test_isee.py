@@ -11,6 +11,8 @@ import h5py
 import numpy as np
 import pytest
 
+pytestmark = pytest.mark.slow        # rare-event campaigns in real processes: not in the quick loop (pytest -m "not slow")
+
 REPO = Path(__file__).resolve().parents[2]
 BASE = REPO / "scenarios" / "ctv24_landing.toml"   # measured on ctv24 (the first default)
 #: The ``dask`` command of this Python's environment (on PATH or not).

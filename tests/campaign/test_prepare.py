@@ -8,12 +8,15 @@ import pickle
 import numpy as np
 import pytest
 
-import boatland.campaign.runner as runner
-import boatland.model.pile_diffraction as pd
+import boatland.campaign.prepare as prepare
+import boatland.checks.memory
+import boatland.sea.pile as pd
 import boatland.trial.simulate as sim
 from boatland.campaign.plan import load_campaign
-from boatland.campaign.runner import check_cases, execute_trial, prepare_cases, run_campaign
-from boatland.scenario_check import load, resolve_database
+from boatland.campaign.prepare import CasePreparation, campaign_tables, check_cases, prepare_cases, start_background
+from boatland.campaign.runner import execute_trial, run_campaign
+from boatland.checks.files import load, resolve_database
+from boatland.landing.setup import Setup
 
 from test_runner import campaign_file, same, summaries
 
@@ -30,17 +33,18 @@ def bits(row):
 
 @pytest.fixture
 def mini(tmp_path, monkeypatch):
-    monkeypatch.setattr(runner, "_CHECKED", {})
-    monkeypatch.setattr(runner, "_CACHE", {})
+    monkeypatch.setattr(prepare, "_CHECKED", {})
+    monkeypatch.setattr(prepare, "_WORKER", {})
     path = campaign_file(tmp_path, seeds=2, duration=30.0)
     return path, load_campaign(path, load_scenario=load)
 
 
+@pytest.mark.slow
 def test_check_cases_makes_each_memory_once_per_campaign(mini, monkeypatch):
     path, campaign = mini
     calls = []
-    real = sim.prepare_memory
-    monkeypatch.setattr(sim, "prepare_memory", lambda *a: calls.append(a) or real(*a))
+    real = Setup.memory
+    monkeypatch.setattr(Setup, "memory", lambda *a: calls.append(a) or real(*a))
     first = check_cases(campaign, resolve_database)
     assert check_cases(campaign, resolve_database) == first and len(calls) == 1   # four cases, one memory
     changed = path.with_name("changed.toml")
@@ -49,6 +53,7 @@ def test_check_cases_makes_each_memory_once_per_campaign(mini, monkeypatch):
     assert len(calls) == 2                                          # another campaign is checked again
 
 
+@pytest.mark.slow
 def test_shipped_case_data_gives_the_trial_a_worker_makes_itself(mini, monkeypatch):
     path, campaign = mini
     check_cases(campaign, resolve_database)
@@ -57,15 +62,17 @@ def test_shipped_case_data_gives_the_trial_a_worker_makes_itself(mini, monkeypat
     assert shared[0].tables[0] is shared[2].tables[0]            # same direction (Hs differs): one table
     spec = campaign.trials()[3]                                     # case 1, second seed
     own = execute_trial(str(path), spec, LOADERS)                   # memory, check, arrays, tables: its own
-    monkeypatch.setattr(runner, "_CACHE", {})
+    monkeypatch.setattr(prepare, "_WORKER", {})
     monkeypatch.setattr(pd, "_TABLES", {})
-    for name in ("prepare_memory", "check_radiation", "compile_motion"):
-        monkeypatch.setattr(sim, name, made_again)
+    monkeypatch.setattr(Setup, "memory", made_again)
+    monkeypatch.setattr(boatland.checks.memory, "check_radiation", made_again)
+    monkeypatch.setattr(sim, "compile_motion", made_again)
     monkeypatch.setattr(pd, "_scattered_columns", made_again)
     shipped = execute_trial(str(path), spec, LOADERS, None, pickle.loads(pickle.dumps(shared[spec.case])))
     assert shipped["status"] == 0 and bits(shipped) == bits(own)
 
 
+@pytest.mark.slow
 def test_a_case_that_cannot_be_prepared_runs_as_before(mini, tmp_path, monkeypatch):
     """Its trials make everything themselves (and would meet and record the same error): the store is the
     same as with every case prepared."""
@@ -73,39 +80,41 @@ def test_a_case_that_cannot_be_prepared_runs_as_before(mini, tmp_path, monkeypat
     run_campaign(campaign, tmp_path / "all.h5", loaders=LOADERS, workers=1)
     real = sim.pile_tables
 
-    def refuse_case_2(scenario, db):                                # Hs 0.6 m, head seas
-        if (scenario.document["sea"]["Hs"], scenario.document["sea"]["relative_direction_deg"]) == (0.6, 180.0):
+    def refuse_case_2(setup):                                       # Hs 0.6 m, head seas
+        sea = setup.scenario.document["sea"]
+        if (sea["Hs"], sea["relative_direction_deg"]) == (0.6, 180.0):
             raise RuntimeError("cannot prepare")
-        return real(scenario, db)
+        return real(setup)
 
     monkeypatch.setattr(sim, "pile_tables", refuse_case_2)
-    monkeypatch.setattr(runner, "_CACHE", {})
+    monkeypatch.setattr(prepare, "_WORKER", {})
     monkeypatch.setattr(pd, "_TABLES", {})
     assert sorted(prepare_cases(campaign, resolve_database)) == [0, 1, 3]
     run_campaign(campaign, tmp_path / "some.h5", loaders=LOADERS, workers=1)
     same(summaries(tmp_path / "all.h5"), summaries(tmp_path / "some.h5"))
 
 
+@pytest.mark.slow
 def test_the_tables_of_every_case_are_made_together_beside_the_checks(mini, monkeypatch):
     """The campaign's pile tables (its two wave directions) come from one pass of the series in the
     background process (a real forked process, started before the checks); the campaign's own process
     then makes none, and they are the tables it would have made itself, bit for bit."""
     path, campaign = mini
     monkeypatch.setattr(pd, "_TABLES", {})
-    background = runner.start_background(campaign, LOADERS, "local", 2)
+    background = start_background(campaign, LOADERS, "local", 2)
     try:
         made = background.tables()
         passes = []
         columns = pd._scattered_columns
         monkeypatch.setattr(pd, "_scattered_columns", lambda db, layout, k, th: passes.append(len(th)) or
                             columns(db, layout, k, th))
-        own = runner._campaign_tables(campaign, resolve_database)
+        own = campaign_tables(campaign, resolve_database)
         assert passes == [2] and len(made) == len(own) == 2
         assert [(t.key, t.reduced.tobytes()) for t in made] == [(t.key, t.reduced.tobytes()) for t in own]
         monkeypatch.setattr(pd, "_TABLES", {})
         monkeypatch.setattr(pd, "_scattered_columns", made_again)
         check_cases(campaign, resolve_database)
-        prepared = runner._CasePreparation(campaign, resolve_database, background)
+        prepared = CasePreparation(campaign, resolve_database, background)
         data = [prepared.get(case) for case in range(4)]
         assert all(d is not None and len(d.tables) == 1 for d in data)
     finally:

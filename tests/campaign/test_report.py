@@ -13,6 +13,8 @@ from boatland.campaign.report import (figure_limiting_polar, figure_p_vs_hs, fig
                                       store_decision, write_report)
 from boatland.cli import main
 
+pytestmark = pytest.mark.slow        # a campaign run for the report: not in the quick loop (pytest -m "not slow")
+
 
 def test_the_campaign_prints_its_decision_table(small_store):
     _, store, out = small_store

@@ -29,6 +29,7 @@ def blowup_campaign(tmp_path):
     return path
 
 
+@pytest.mark.slow
 def test_a_blown_up_trial_is_reported_failed_and_left_out_of_p(tmp_path):
     camp = blowup_campaign(tmp_path)
     r = run("campaign", camp, "-o", tmp_path / "b.h5", "--workers", "1")
@@ -80,6 +81,7 @@ def _alive(pid):
         return False
 
 
+@pytest.mark.slow
 def test_a_second_campaign_on_the_store_is_refused_and_the_first_finishes_intact(tmp_path):
     camp = long_campaign(tmp_path)
     store = tmp_path / "s.h5"
@@ -96,6 +98,7 @@ def test_a_second_campaign_on_the_store_is_refused_and_the_first_finishes_intact
     assert not store.with_name("s.h5.lock").exists() and not store.with_name("s.h5.journal").exists()
 
 
+@pytest.mark.slow
 def test_a_lock_left_by_a_killed_campaign_does_not_block(tmp_path):
     camp = long_campaign(tmp_path, "stale")
     store = tmp_path / "t.h5"
@@ -111,6 +114,7 @@ def test_a_lock_left_by_a_killed_campaign_does_not_block(tmp_path):
     assert not list(tmp_path.glob(".t.h5.*.part"))
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("sig", [signal.SIGKILL, signal.SIGTERM])
 def test_local_workers_die_with_the_campaign(tmp_path, sig):
     camp = long_campaign(tmp_path, f"orphans{int(sig)}")
@@ -138,6 +142,7 @@ def _trial_bits(tmp_path, name, threads):
     return arrays
 
 
+@pytest.mark.slow
 def test_blas_threads_do_not_change_a_trial_bit_for_bit(tmp_path):
     one = _trial_bits(tmp_path, "one", 1)
     four = _trial_bits(tmp_path, "four", 4)
@@ -203,6 +208,7 @@ def small_disk(tmp_path):
         subprocess.run(["umount", "-l", str(mnt)], capture_output=True)
 
 
+@pytest.mark.slow
 def test_a_full_disk_stops_the_campaign_with_one_line_and_keeps_what_is_stored(tmp_path, small_disk):
     camp = long_campaign(tmp_path, "full", seeds=100)
     store = small_disk / "f.h5"

@@ -68,6 +68,7 @@ def reference(tmp_path_factory):
     return camp, tmp / "one.h5"
 
 
+@pytest.mark.slow
 def test_one_and_two_local_workers_give_the_same_store(reference, tmp_path):
     camp, one = reference
     r = run("campaign", camp, "-o", tmp_path / "two.h5", "--workers", "2")
@@ -78,6 +79,7 @@ def test_one_and_two_local_workers_give_the_same_store(reference, tmp_path):
     assert len(set(rows["seed"])) == 3                           # common seeds across the 4 cases
 
 
+@pytest.mark.slow
 def test_blas_thread_counts_give_the_same_store(reference, tmp_path):
     """OPENBLAS_NUM_THREADS (and OMP_NUM_THREADS) 4 with two workers: the same store as 1 worker with the
     machine's default — every trial pins BLAS to one thread (boatland.reproducible)."""
@@ -88,6 +90,7 @@ def test_blas_thread_counts_give_the_same_store(reference, tmp_path):
     same(summaries(one), summaries(tmp_path / "four.h5"))
 
 
+@pytest.mark.slow
 def test_a_real_dask_cluster_gives_the_same_store(reference, tmp_path, dask_cluster):
     camp, one = reference
     r = run("campaign", camp, "-o", tmp_path / "dask.h5", "--scheduler", dask_cluster)
@@ -95,6 +98,7 @@ def test_a_real_dask_cluster_gives_the_same_store(reference, tmp_path, dask_clus
     same(summaries(one), summaries(tmp_path / "dask.h5"))
 
 
+@pytest.mark.slow
 def test_unreachable_scheduler_is_a_clear_error(reference, unused_port):
     camp, _ = reference
     t0 = time.monotonic()
@@ -103,6 +107,7 @@ def test_unreachable_scheduler_is_a_clear_error(reference, unused_port):
     assert time.monotonic() - t0 < 60
 
 
+@pytest.mark.slow
 def test_resume_after_sigkill_equals_an_uninterrupted_run(tmp_path, sigkill_campaign):
     """Killed with SIGKILL at random moments, then run to the end: the same store as one uninterrupted
     run, bit for bit in the summaries, every trial once."""
@@ -119,6 +124,7 @@ def test_resume_after_sigkill_equals_an_uninterrupted_run(tmp_path, sigkill_camp
     assert not store.with_name(store.name + ".journal").exists()
 
 
+@pytest.mark.slow
 def test_a_store_of_another_campaign_is_refused(reference, tmp_path):
     _, one = reference
     other = campaign_file(tmp_path, name="other", seeds=2)
@@ -157,6 +163,7 @@ def test_a_campaign_the_checks_refuse_stops_the_background_work_started_before_t
     assert left.stdout.strip() == "", left.stdout
 
 
+@pytest.mark.slow
 def test_report_writes_tables_and_figures(reference, tmp_path):
     _, one = reference
     r = run("report", one, "-o", tmp_path / "rep", "--target", "0.5")
@@ -169,6 +176,7 @@ def test_report_writes_tables_and_figures(reference, tmp_path):
     assert "screening: P(slip) (frequency domain)" in header      # seed 002 Tables 4.14–4.15 side by side
 
 
+@pytest.mark.slow
 def test_an_unwritable_store_fails_before_any_trial(reference, tmp_path):
     camp, _ = reference
     blocker = tmp_path / "a_file"

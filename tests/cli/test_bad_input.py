@@ -274,6 +274,7 @@ def test_the_corpus_is_large():
     assert len(CASES) >= 150, len(CASES)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("argv, names", [(c[1], c[2]) for c in CASES], ids=[c[0] for c in CASES])
 def test_bad_input_is_one_line_exit_2_and_touches_nothing(inputs, monkeypatch, capsys, argv, names):
     monkeypatch.chdir(inputs)
@@ -302,6 +303,7 @@ SUBSET = ["run --duration nan", "run -o x.toml", "run seed_negative", "run fende
           "operability binary", "rao direction nan", "replay save itself", "campaign hs 50"]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", SUBSET)
 def test_as_a_real_process(inputs, name):
     argv, names = next((c[1], c[2]) for c in CASES if c[0] == name)

@@ -67,6 +67,7 @@ def check(caught, *inputs):
             assert word in texts, (word, texts)
 
 
+@pytest.mark.slow
 def test_run_plot(tmp_path, figures, capsys):
     assert main(["run", CTV24_LANDING, "--duration", "45", "-o", str(tmp_path / "r.h5"), "--json"]) == 0
     figures.clear()
@@ -77,6 +78,7 @@ def test_run_plot(tmp_path, figures, capsys):
     assert any("needed / available" in a[2] for a in axes)
 
 
+@pytest.mark.slow
 def test_screen_polar_and_shear_sweep(tmp_path, figures):
     assert main(["screen", "--tp", "5", "9", "3", "--directions", "4", "-o", str(tmp_path / "p.png")]) == 0
     check(figures, "ctv_landing", "push 150 kN", "μ 0.8", "1800 s access", "P = 0.00119", "180° = head seas at the top")
@@ -87,6 +89,7 @@ def test_screen_polar_and_shear_sweep(tmp_path, figures):
     check(figures, "Tp 7 s", "push 150 kN", "μ 0.8")
 
 
+@pytest.mark.slow
 def test_rao_figures(tmp_path, figures):
     assert main(["rao", "--periods", "5", "20", "-o", str(tmp_path / "r.png"),
                  "--compare-open-sea", str(tmp_path / "c.png")]) == 0
@@ -94,6 +97,7 @@ def test_rao_figures(tmp_path, figures):
     check(figures[1:], "ctv_landing", "monopile")
 
 
+@pytest.mark.slow
 def test_irf_figure(tmp_path, figures):
     assert main(["irf", "ctv24", "--no-store", "--no-fit", "--plot", str(tmp_path / "irf.png")]) == 0
     check(figures, "ctv24", "T_K = 60 s", "tail")

@@ -21,6 +21,7 @@ def test_stribeck_curve():
     assert stribeck(v, 0.9, 0.7, 0.2, 0.2, 1.5) == pytest.approx(0.7 + 0.2 * np.exp(-(v / 0.2) ** 1.5) + 0.2 * v)
 
 
+@pytest.mark.slow
 def test_mass_striking_a_linear_fender():
     """Contact lasts half the spring period π√(m/c_f) and the mass leaves with its entry speed."""
     c_f, v0, dt = 4.0e5, 1.0, 1e-3
@@ -33,6 +34,7 @@ def test_mass_striking_a_linear_fender():
     assert r["fn"].min() >= 0.0 and r["mode"][-1, 0] == OPEN  # never pulling; open again
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("dt", [0.01, 0.002])
 def test_coulomb_stick_slip_times_within_one_step(dt):
     r = coulomb_case(dt)                      # the rigid stick (shear_stiffness inf)
@@ -44,6 +46,7 @@ def test_coulomb_stick_slip_times_within_one_step(dt):
     assert r["t"][slip_end[0]] == pytest.approx(t_e, abs=dt + 1e-9)
 
 
+@pytest.mark.slow
 def test_a_stiff_rubber_slips_when_the_rigid_stick_does():
     """The compliant contact's stick → slip and re-stick converge to the closed form as k_t grows
     (within a step and the rubber's own delay: the load reaches μN a few k_t-periods later)."""

@@ -30,6 +30,7 @@ def test_help_lists_the_frequency_domain_commands():
     assert r.returncode == 0 and all(c in r.stdout for c in ("rao", "screen", "operability"))
 
 
+@pytest.mark.slow
 def test_rao_table_and_figure(tmp_path):
     png = tmp_path / "rao.png"
     r = run("rao", SCENARIO, "--periods", "5", "20", "-o", png)
@@ -43,6 +44,7 @@ def test_rao_json_long_waves():
     assert abs(rows[0]["free_heave"] - 1) < 0.01  # heave → 1 for long waves
 
 
+@pytest.mark.slow
 def test_screen_table_and_polar_figure(tmp_path):
     png = tmp_path / "screen.png"
     r = run("screen", SCENARIO, "--tp", "5", "9", "3", "--directions", "4", "--accept", "conservative", "-o", png)
@@ -50,6 +52,7 @@ def test_screen_table_and_polar_figure(tmp_path):
     assert "P_acc = 2e-05" in r.stdout and "governing" in r.stdout and png.stat().st_size > 10_000
 
 
+@pytest.mark.slow
 def test_screen_json():
     r = run("screen", SCENARIO, "--tp", "5", "9", "3", "--directions", "4", "--json", "--statistics", "rice")
     out = json.loads(r.stdout)
@@ -57,6 +60,7 @@ def test_screen_json():
     assert all(0 < h < 2 for row in out["Hs_limit"] for h in row)
 
 
+@pytest.mark.slow
 def test_operability_prints_availability():
     r = run("operability", SCENARIO, SCATTER, "--json", "--mu", "0.8", "--thrust", "150e3")
     assert r.returncode == 0, r.stderr
@@ -69,12 +73,14 @@ def test_screen_accept_outside_0_1_exit_2(accept):
     one_line_error(run("screen", SCENARIO, "--accept", accept), "accepted probability")
 
 
+@pytest.mark.slow
 def test_operability_bad_scatter_exit_2(tmp_path):
     bad = tmp_path / "bad.csv"
     bad.write_text("Hs,Tp,direction_deg,occurrence\n1,7,180,0.5\n1,8,180,-0.5\n")
     one_line_error(run("operability", SCENARIO, bad), "bad.csv", "line 3", "negative")
 
 
+@pytest.mark.slow
 def test_operability_sum_far_from_1_warns_and_runs(tmp_path):
     hours = tmp_path / "hours.csv"
     hours.write_text("Hs,Tp,direction_from_deg,occurrence\n0.1,7,0,300\n2.0,8,0,100\n")
@@ -93,6 +99,7 @@ def test_fender_point_outside_the_hull_exit_2(tmp_path):
     assert r.returncode == 2 and "fender.points[1]" in r.stderr and "Traceback" not in r.stderr
 
 
+@pytest.mark.slow
 def test_rao_compare_open_sea_writes_the_figure(tmp_path):
     """Issue 9: free RAOs beside the pile vs the open sea for five headings, as a figure."""
     import subprocess

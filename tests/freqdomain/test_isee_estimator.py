@@ -46,6 +46,7 @@ def test_two_orthogonal_events_give_their_union():
     assert est.lo < exact < est.hi
 
 
+@pytest.mark.slow
 def test_many_correlated_half_spaces_match_plain_monte_carlo():
     """A discretised first passage: b_k = (cos ω t_k, sin ω t_k) of two frequencies — ISEE with 400 samples
     against 2·10⁶ plain samples (both unbiased)."""

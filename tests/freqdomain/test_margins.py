@@ -10,10 +10,11 @@ import pytest
 
 from boatland.freqdomain.isee import draw, estimate
 from boatland.freqdomain.margins import landed_margins
-from boatland.freqdomain.screening import LandingSetup
-from boatland.model.gaussian_sea import GaussianSea
-from boatland.scenario_check import load, resolve_database
+from boatland.freqdomain.landing import LandingSetup
+from boatland.sea.gaussian import GaussianSea
+from boatland.checks.files import load, resolve_database
 from boatland.trial.simulate import exposure_start
+from boatland.landing.setup import landing_setup
 
 REPO = __import__("pathlib").Path(__file__).resolve().parents[2]
 CTV24_LANDING = REPO / "scenarios" / "ctv24_landing.toml"   # the figures' vessel (the first default)
@@ -26,8 +27,9 @@ def margins(hs, rel, access, directions=16, kappa=0.3):
             {"sea.Hs": hs, "sea.relative_direction_deg": rel})
         sc = sc.replace({"simulation.duration": exposure_start(sc) + 30.0 + access})
         db = resolve_database(sc)
-        dt, n = sc.time_step(db), sc.n_steps(db)
-        g = GaussianSea(sea=sc.wave_model(db), dt=dt, n_steps=n)
+        setup = landing_setup(sc, db)
+        dt, n = setup.dt, setup.n_steps
+        g = GaussianSea(sea=setup.waves, dt=dt, n_steps=n)
         x0, y0, _ = sc.start_pose()
         k0 = int(math.ceil((exposure_start(sc) + 30.0) / dt - 1e-9))
         return landed_margins(db, LandingSetup.from_scenario(sc, db), g, x0=x0, y0=y0, first_step=k0,
@@ -73,6 +75,7 @@ def test_the_friction_circle_lies_inside_the_inscribed_polygon(oblique):
     assert slips >= 10
 
 
+@pytest.mark.slow
 def test_linear_first_slip_lies_between_its_bounds_and_tracks_the_directions():
     lm = margins(0.1, 135.0, 600.0)
     vals = {k: [] for k in ("circle", "square", "domain")}
@@ -110,7 +113,7 @@ class OneMargin:
         return b, self.a
 
     def count(self, u, chosen):
-        from boatland.model.gaussian_sea import grid_series
+        from boatland.sea.gaussian import grid_series
 
         c = np.zeros((1, self.lm.n_fft), complex)
         np.add.at(c[0], self.lm.m, self.E * (u[0::2] - 1j * u[1::2]))
@@ -126,15 +129,16 @@ def test_one_margin_tracks_rice_where_the_screening_assumes_it(gamma):
     ISEE of that margin's first passage over 30 min (discrete steps of 0.05 s) holds Rice's value in its 95 %
     interval. (The whole landing differs from the screening: bench/README.md, "ISEE".)"""
     from boatland.freqdomain.margins import margin_events
-    from boatland.freqdomain.screening import rice_rate
+    from boatland.freqdomain.statistics import rice_rate
 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         sc = load(CTV24_LANDING).replace({"sea.Hs": 0.16, "sea.gamma": gamma})
         sc = sc.replace({"simulation.duration": exposure_start(sc) + 30.0 + 1800.0})
         db = resolve_database(sc)
-        dt, n = sc.time_step(db), sc.n_steps(db)
-        g = GaussianSea(sea=sc.wave_model(db), dt=dt, n_steps=n)
+        setup = landing_setup(sc, db)
+        dt, n = setup.dt, setup.n_steps
+        g = GaussianSea(sea=setup.waves, dt=dt, n_steps=n)
         x0, y0, _ = sc.start_pose()
         lm = landed_margins(db, LandingSetup.from_scenario(sc, db), g, x0=x0, y0=y0,
                             first_step=int(math.ceil((exposure_start(sc) + 30.0) / dt - 1e-9)), kappa=0.0)

@@ -12,7 +12,7 @@ import pytest
 
 from boatland.errors import BoatlandInputError, BoatlandWarning
 from boatland.freqdomain import ScatterTable, availability, read_scatter
-from boatland.model.seastate import SpectrumPart
+from boatland.sea.spectra import SpectrumPart
 
 SHIPPED = Path(__file__).resolve().parents[2] / "scenarios" / "scatter_north_sea.csv"
 
@@ -26,6 +26,7 @@ def fine_scatter():
     return ScatterTable.from_arrays(H.ravel(), T.ravel(), D.ravel(), occ.ravel() / occ.sum(), source="fine")
 
 
+@pytest.mark.slow
 def test_availability_grows_with_mu_times_thrust(landing, fine_scatter):
     """Grøtting 2015 Table 4.2: availability depends strongly on μ·F_b. Measured on ctv24's landing
     (each contact on its own, the compliant fender, the pile's scattered wave; all headings): 0.255 (48 kN),

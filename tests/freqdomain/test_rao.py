@@ -10,7 +10,7 @@ import pytest
 from boatland.freqdomain import (excitation_force, first_harmonic, free_rao, hinged_rao, impedance, point_map,
                                  preload_stiffness, radiation_coefficients)
 from boatland.hydro.builtin import load_builtin
-from boatland.model.hydrodb import skew
+from boatland.vessel.database import skew
 
 BOW = np.array([12.3, 0.0, 1.5])     # ctv24's bow fender point, body frame [m]
 NORMAL = np.array([-1.0, 0.0, 0.0])  # contact plane ahead of the bow, normal towards the vessel

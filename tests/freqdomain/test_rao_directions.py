@@ -28,6 +28,7 @@ def test_hinged_rao_of_the_half_database_equals_the_twin(dbs, landing):
     assert np.max(np.abs(a.J - b.J)) <= 1e-9 * np.max(np.abs(b.J))
 
 
+@pytest.mark.slow
 def test_asymmetric_half_database_refuses_directions_outside(dbs, landing):
     full, _, asym = dbs
     _, setup = landing

@@ -165,13 +165,14 @@ def test_bad_setup_values_are_refused():
         screening_grid(db, s, [8.0], [180.0], statistics="gumbel")
 
 
+@pytest.mark.slow
 def test_sea_response_adds_the_wave_systems(landing):
     """Grøtting 2015 eq. 3.41–3.45: a swell and a wind sea from different directions add their spectral
     integrals; one long-crested part is the screening grid's cell scaled by Hs²; a very narrow cos-2s
     spreading tends to the long-crested sea. Every response — each contact's four margins and roll (free
     on the rubber fender) — to rtol 1e-10."""
     from boatland.freqdomain import sea_response
-    from boatland.model.seastate import SpectrumPart
+    from boatland.sea.spectra import SpectrumPart
 
     db, s = landing
     swell = SpectrumPart(Hs=0.15, Tp=12.0, gamma=5.0, direction_deg=150.0)
@@ -189,6 +190,7 @@ def test_sea_response_adds_the_wave_systems(landing):
     np.testing.assert_allclose(narrow.sigma, one[0].sigma, rtol=0.01)
 
 
+@pytest.mark.slow
 def test_pile_wave_on_the_columns_the_directions_read_gives_the_same_excitation(landing):
     """The screening adds the pile's scattered wave only to the columns of the table that the interpolation
     at its directions reads (issue 16: 3 of 72 directions of the ctv24 mesh instead of all): the excitation

@@ -18,7 +18,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from boatland.freqdomain.screening import rayleigh_exceedance, rice_rate, vanmarcke_rate
+from boatland.freqdomain.statistics import rayleigh_exceedance, rice_rate, vanmarcke_rate
 from boatland.waves.spectra import jonswap
 
 DT, N = 0.1, 2 ** 21

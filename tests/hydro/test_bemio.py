@@ -7,7 +7,7 @@ import pytest
 from boatland.errors import HydroDataError
 from boatland.hydro import detect_format, read_hydro
 from boatland.hydro.bemio import read_bemio, write_bemio
-from boatland.model.hydrodb import HullMesh, Provenance
+from boatland.vessel.database import HullMesh, Provenance
 
 FIELDS = ("omega", "A", "B", "X", "C", "A_inf", "A_0", "M", "wave_dir_deg", "ref_point", "cog", "cob")
 
@@ -47,7 +47,7 @@ def test_write_read_exact(sphere, tmp_path):
 
 
 def test_write_read_exact_with_extras(sphere, tmp_path):
-    from boatland.model.hydrodb import rigid_body_mass_matrix
+    from boatland.vessel.database import rigid_body_mass_matrix
 
     db = sphere.replace(
         M=rigid_body_mass_matrix(261800.0, (0, 0, -2), (1e6, 1e6, 2e6)), A_0=sphere.A_inf * 1.3,

@@ -13,7 +13,9 @@ from boatland.errors import BoatlandInputError
 from boatland.hydro.bemio import read_bemio, write_bemio
 from boatland.hydro.build import build_database, build_from_file, lid_depth, mirror_directions
 from boatland.hydro.builtin import load_builtin, vessel_file
-from boatland.model.vessel import load_vessel
+from boatland.vessel.files import load_vessel
+
+pytestmark = pytest.mark.slow        # Capytaine builds: not in the quick loop (pytest -m "not slow")
 
 # Coarse versions of the shipped vessels: ~670 hull panels instead of ~1500 (panels 0.75 m instead
 # of 0.48 m full scale; model2 in proportion), 9 frequencies on the shipped grids covering the

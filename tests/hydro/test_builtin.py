@@ -10,7 +10,7 @@ import pytest
 from boatland.conventions import PORT_STARBOARD_SIGN, mirror_direction_deg
 from boatland.errors import BoatlandInputError
 from boatland.hydro.builtin import BUILTIN, builtin_path, load_builtin, vessel_file
-from boatland.model.vessel import load_vessel
+from boatland.vessel.files import load_vessel
 
 SYMMETRIC = (0, 2, 4)  # surge, heave, pitch: even under y → −y
 ANTISYMMETRIC = (1, 3, 5)  # sway, roll, yaw: odd
@@ -52,7 +52,7 @@ def test_database_matches_its_vessel_file(db):
     assert any(n.startswith("heave damping at ω_max") for n in db.provenance.notes)
     assert db.mesh is not None and db.mesh.n_panels > 1000
     # the mesh is the hull of the vessel file: its volume is the displaced volume within 1 %
-    from boatland.model.hull import mesh_volume
+    from boatland.vessel.wigley import mesh_volume
     assert mesh_volume(db.mesh.vertices, db.mesh.faces) == pytest.approx(spec.hull.volume, rel=0.01)
     assert db.disp_vol * db.rho == pytest.approx(spec.total_mass, rel=0.01)
 
@@ -180,7 +180,7 @@ def test_ctv27_passes_the_builders_checks():
     shipped file 2.55 MB.
     """
     from boatland.irf.impulse import find_spikes
-    from boatland.model.ctv_hull import CTVCatamaran
+    from boatland.vessel.ctv_hull import CTVCatamaran
 
     db = load_builtin("ctv27")
     spec = load_vessel(vessel_file("ctv27"))

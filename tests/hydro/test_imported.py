@@ -17,10 +17,10 @@ import numpy as np
 import pytest
 
 from boatland.hydro import read_hydro
-from boatland.hydro.imported import read_vessel_file
-from boatland.model.imported import MassProperties, apply_mass_properties, weight_terms
-from boatland.model.tomlspec import SpecError
-from boatland.model.vessel import load_vessel
+from boatland.hydro.read import read_vessel_file
+from boatland.vessel.imported import MassProperties, apply_mass_properties, weight_terms
+from boatland.tomlspec import SpecError
+from boatland.vessel.files import load_vessel
 
 R_G = math.sqrt(0.4) * 5.0
 
@@ -147,6 +147,7 @@ displacement = [0.0, 0.0, 0.5]
 """
 
 
+@pytest.mark.slow
 def test_imported_sphere_runs_from_a_scenario_file_alone(refdata, tmp_path):
     """`boatland run` of a scenario whose vessel.database is a vessel file naming BEM output with no mass
     matrix (HydroChrono's BEMIO sphere, mass and radii given in the vessel file): `scenario check` passes,

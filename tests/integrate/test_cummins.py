@@ -5,9 +5,9 @@ import pytest
 
 from boatland.hydro.bemio import read_bemio
 from boatland.irf.impulse import IRFSettings
-from boatland.model.hydrodb import rigid_body_mass_matrix
-from boatland.model.motion import MotionArrays, compile_motion
-from boatland.model.radiation import radiation_memory
+from boatland.vessel.database import rigid_body_mass_matrix
+from boatland.trial.motion import MotionArrays, compile_motion
+from boatland.vessel.radiation import radiation_memory
 from boatland.validation.timedomain import CTV_X0, HEMISPHERE_X0, free_decays, rms_differences
 
 M, K_SPRING, B_LIN = 2.0e5, 8.0e5, 4.0e4     # heave oscillator: ω0 = 2 rad/s, ζ = 0.05
@@ -71,6 +71,7 @@ def zero_up_crossings(t, z):
     return t[k] - z[k] * (t[k + 1] - t[k]) / (z[k + 1] - z[k])
 
 
+@pytest.mark.slow
 def test_hemisphere_decay_period_is_the_database_natural_period(hemisphere):
     """Released from +1 m heave: the zero-crossing period equals T3 from M, A(ω), C (4.365 s) within 1 %.
 
@@ -119,7 +120,7 @@ def test_convolution_and_state_space_agree_on_the_ctv(ctv24):
 
 
 def test_state_space_pole_outside_rk4_region_is_refused(ctv24):
-    from boatland.model.motion import rk4_amplification
+    from boatland.trial.motion import rk4_amplification
 
     db, mem = ctv24
     fastest = max(np.abs(np.linalg.eigvals(f.A)).max() for f in mem.state_space.pairs.values() if f.order)

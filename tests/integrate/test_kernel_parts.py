@@ -3,15 +3,16 @@
 import numpy as np
 import pytest
 
+from boatland import rk4
 from boatland.integrate.cummins import _A_NEXT, _C2, _state_space
-from boatland.model.motion import modal_layout
+from boatland.trial.motion import modal_layout
 
 
 def test_stage_table_is_classic_rk4():
-    """Stage times c = 0, ½, ½, 1 (in half steps 0, 1, 1, 2); each stage state is the step start plus
-    c_next Δt times the previous stage's derivative (the RK4 tableau's sub-diagonal a = (½, ½, 1))."""
-    assert _C2 == (0, 1, 1, 2)
-    assert np.allclose(np.array(_C2[1:]) / 2, _A_NEXT)
+    """The integrator reads the tableau of :mod:`boatland.rk4`: stage times c = 0, ½, ½, 1 (in half steps
+    0, 1, 1, 2); each stage state is the step start plus a Δt times the previous stage's derivative."""
+    assert _C2 == rk4.C_HALF_STEPS == (0, 1, 1, 2)
+    assert _A_NEXT == rk4.A_NEXT and np.allclose(np.array(_C2[1:]) / 2, _A_NEXT)
 
 
 def _toy_system():

@@ -7,7 +7,7 @@ import threading
 import numpy as np
 import pytest
 
-from boatland.model.motion import MotionArrays
+from boatland.trial.motion import MotionArrays
 
 M, K_SPRING = 2.0e5, 8.0e5
 

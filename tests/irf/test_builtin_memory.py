@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from boatland.hydro.builtin import load_builtin
-from boatland.model.radiation import radiation_memory
+from boatland.vessel.radiation import radiation_memory
 
 
 @pytest.fixture(scope="module", params=["ctv24", "model2"])

@@ -13,6 +13,7 @@ def diag_db(w, b33):
     return A, B
 
 
+@pytest.mark.slow
 def test_gaussian_damping_gives_closed_form_kernel():
     """B = b0 ω² exp(−ω²/2s²) (zero at ω = 0, like radiation damping) ↔
     K = (2/π) b0 s³ √(π/2) (1 − s²t²) exp(−s²t²/2) — to 1e-4 of K(0)."""

@@ -1,6 +1,7 @@
 """Filon-type transforms: exact for piecewise-linear f, analytic transform pairs."""
 
 import numpy as np
+import pytest
 from scipy.integrate import quad
 
 from boatland.irf.quadrature import cos_transform, sin_transform
@@ -18,6 +19,7 @@ def test_exact_for_piecewise_linear_at_any_frequency():
         assert abs(sin_transform(x, f, [y])[0] - es) < 1e-12
 
 
+@pytest.mark.slow
 def test_exponential_kernel_gives_lorentzian_damping_and_added_mass():
     """K = e^{-at}: B(ω) = a/(a²+ω²), A(ω) − A∞ = −1/(a²+ω²)  (Cummins/Ogilvie pair, seed 000 eq. 3.41)."""
     a = 0.8

@@ -6,7 +6,7 @@ import pytest
 from boatland.hydro.bemio import read_bemio
 from boatland.irf.impulse import IRFSettings
 from boatland.irf.statespace import fit_pair, frequency_response, impulse_response
-from boatland.model.radiation import radiation_memory
+from boatland.vessel.radiation import radiation_memory
 
 
 @pytest.fixture(scope="module")

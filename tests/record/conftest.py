@@ -9,7 +9,7 @@ import pytest
 
 from boatland.record.mcap_log import McapLog
 from boatland.record.rerun_log import RerunLog
-from boatland.scenario_check import default_scenario_path, load_checked
+from boatland.checks.files import default_scenario_path, load_checked
 from boatland.trial.simulate import simulate
 
 

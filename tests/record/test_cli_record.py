@@ -11,6 +11,7 @@ from boatland.record.plot import PANELS, figure_of_run
 from boatland.record.reader import read_run_log
 
 
+@pytest.mark.slow
 def test_run_writes_the_log_next_to_the_output_and_an_rrd(tmp_path, capsys):
     rrd = tmp_path / "live.rrd"
     assert main(["run", "--duration", "25", "-o", str(tmp_path / "trial.h5"), "--rerun", f"save={rrd}"]) == 0
@@ -20,6 +21,7 @@ def test_run_writes_the_log_next_to_the_output_and_an_rrd(tmp_path, capsys):
     assert read_run_log(log).duration == 25.0
 
 
+@pytest.mark.slow
 def test_run_default_log_name_in_the_current_directory_and_no_log(tmp_path, monkeypatch, capsys):
     monkeypatch.chdir(tmp_path)
     assert main(["run", "--duration", "2", "--json"]) == 0
@@ -29,6 +31,7 @@ def test_run_default_log_name_in_the_current_directory_and_no_log(tmp_path, monk
     assert list(tmp_path.iterdir()) == []
 
 
+@pytest.mark.slow
 def test_replay_and_plot(recorded, tmp_path, capsys):
     out = tmp_path / "r.rrd"
     assert main(["replay", str(recorded.mcap), "--save", str(out)]) == 0
@@ -46,6 +49,7 @@ def test_replay_and_plot(recorded, tmp_path, capsys):
     assert len(slip.lines) >= 2 and any(np.nanmax(ln.get_ydata()) > 0.1 for ln in slip.lines)
 
 
+@pytest.mark.slow
 def test_replay_of_a_truncated_log_says_what_was_lost(recorded, tmp_path, capsys):
     bad = tmp_path / "cut.mcap"
     data = recorded.mcap.read_bytes()

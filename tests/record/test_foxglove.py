@@ -1,6 +1,7 @@
 """What Foxglove shows of a run log: the static 3-D scene (``/scene``), the fender force arrows
 (``/fender/forces``) and the shipped layout, all read back from the recorded file."""
 
+import pytest
 import json
 
 import numpy as np
@@ -10,7 +11,7 @@ from mcap_protobuf.decoder import DecoderFactory
 from boatland.record.foxglove_scene import foxglove_layout, layout_path
 from boatland.record.scene import COLORS, FORCE_SCALE, MODE_COLORS, PILE_BOTTOM, PILE_TOP
 from boatland.record.schemas import TOPICS, message_class
-from boatland.trial.simulate import contact_arrays
+from boatland.landing.setup import landing_setup
 
 
 def _messages(path, topic):
@@ -59,7 +60,7 @@ def test_static_scene_hull_pile_tubes_fender_and_sea(recorded):
         assert c.pose.position.z == 0.5 * (top + bottom) and c.size.z == top - bottom > 0   # the tube's real ends
     (ln,) = ents["fender"].lines
     ends = np.array([[p.x, p.y, p.z] for p in ln.points]).reshape(-1, 2, 3)
-    P = np.asarray(contact_arrays(sc, db)[0]).reshape(-1, 3)
+    P = np.asarray(landing_setup(sc, db).contacts()[0]).reshape(-1, 3)
     np.testing.assert_allclose(ends.mean(axis=1), P, atol=1e-12)          # one line per contact, centred on it
 
 
@@ -92,6 +93,7 @@ def test_force_arrows_every_step_coloured_by_the_contact_state(recorded):
     np.testing.assert_allclose(fl, np.hypot(r.ft[..., 0], r.ft[..., 1]) * FORCE_SCALE, rtol=1e-9, atol=1e-12)
 
 
+@pytest.mark.slow
 def test_compiled_arrows_equal_the_readable_reference(recorded):
     """The run log's compiled arrows (hot path) equal the numpy reference over the whole run, and for
     a start pose with a heading (rotation into the global frame)."""
@@ -100,7 +102,7 @@ def test_compiled_arrows_equal_the_readable_reference(recorded):
 
     r, sc, db = recorded.result, recorded.scenario, recorded.db
     for pose in (sc.start_pose(), (-3.0, 4.0, 0.7)):
-        scene = scene_from_trial(sc, db, pose, contact_arrays(sc, db), waves=False)
+        scene = scene_from_trial(landing_setup(sc, db), start_pose=pose, waves=False)
         ref = arrow_values(scene, r.x, r.fn, r.ft, r.mode)
         np.testing.assert_allclose(arrow_values_compiled(scene, r.x, r.fn, r.ft, r.mode), ref, rtol=1e-12, atol=1e-12)
         assert np.isfinite(ref).all()
@@ -113,7 +115,7 @@ def test_shipped_layout_is_the_generated_one_and_names_real_fields(recorded):
     from boatland.record.scene import scene_from_trial
 
     sc, db = recorded.scenario, recorded.db
-    scene = scene_from_trial(sc, db, sc.start_pose(), contact_arrays(sc, db), waves=False)
+    scene = scene_from_trial(landing_setup(sc, db), waves=False)
     assert shipped == json.loads(json.dumps(foxglove_layout(len(scene.fender_points), scene)))
     cfg = shipped["configById"]
     panels = set()

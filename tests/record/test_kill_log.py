@@ -42,6 +42,7 @@ def _kill_once(tmp_path: Path, delay: float):
     return kernel, read_run_log(log).duration
 
 
+@pytest.mark.slow
 def test_sigkill_at_three_random_moments_loses_little_of_what_was_integrated(tmp_path):
     rng = np.random.default_rng(14)
     losses = []

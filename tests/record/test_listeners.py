@@ -61,6 +61,7 @@ def watch(args, seconds=120):
     return p.returncode, out, err, seen
 
 
+@pytest.mark.slow
 def test_rerun_serve_listens_on_loopback_only(tmp_path):
     port = free_port()
     code, out, err, seen = watch(["run", "--duration", "120", "--no-log", "--rerun", "serve", "--port", port])
@@ -69,6 +70,7 @@ def test_rerun_serve_listens_on_loopback_only(tmp_path):
     assert f"rerun+http://127.0.0.1:{port}/proxy" in err
 
 
+@pytest.mark.slow
 def test_a_wider_bind_must_be_asked_for_and_warns(tmp_path):
     port = free_port()
     code, out, err, seen = watch(["run", "--duration", "120", "--no-log", "--rerun", "serve", "--port", port,
@@ -77,6 +79,7 @@ def test_a_wider_bind_must_be_asked_for_and_warns(tmp_path):
     assert ("0.0.0.0", port) in seen and "without authentication" in err
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(shutil.which("xvfb-run") is None, reason="needs xvfb-run (a display for the viewer)")
 def test_the_viewer_spawn_starts_listens_on_loopback_only(tmp_path):
     """``--rerun spawn`` starts a native viewer (under a virtual display here); ``rerun.spawn`` would start it
@@ -117,6 +120,7 @@ def test_a_busy_port_is_an_error_before_the_run(tmp_path):
     assert len(r.stderr.strip().splitlines()) == 1 and "running" not in r.stderr
 
 
+@pytest.mark.slow
 def test_replay_serve_and_a_campaign_open_nothing_wider(tmp_path):
     log = tmp_path / "r.mcap"
     assert subprocess.run([sys.executable, "-m", "boatland", "run", "--duration", "10", "--log", str(log),

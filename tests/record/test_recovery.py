@@ -63,6 +63,7 @@ def test_a_file_cut_before_the_first_block_is_an_input_error(recorded, tmp_path,
         read_run_log(bad)
 
 
+@pytest.mark.slow
 def test_sigkill_mid_run_leaves_a_recoverable_log(tmp_path):
     """A real run (1 h simulated, several seconds of wall time) killed with SIGKILL once its log is growing."""
     log = tmp_path / "killed.mcap"

@@ -4,6 +4,7 @@ import numpy as np
 import pytest
 
 from boatland.record.scene import sea_coefficients
+from boatland.sea.pile import Pile
 from boatland.waves.diffraction import cylinder_field
 from boatland.waves.realisation import regular_components
 
@@ -22,7 +23,7 @@ def test_open_sea_is_the_incident_wave(wave):
 
 def test_beside_the_pile_it_is_the_total_field_and_far_away_the_incident(wave):
     a, px, py = 3.25, 10.0, -4.0
-    pile = (a, px, py, np.inf)
+    pile = Pile(a, (px, py), np.inf)
     # up-wave face of the pile (waves travel towards −x: the face at +x): the run-up of MacCamy–Fuchs
     x, y = np.array([px + a + 1e-9]), np.array([py])
     c = sea_coefficients(wave, x, y, pile)

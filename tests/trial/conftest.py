@@ -5,7 +5,7 @@ from pathlib import Path
 
 import pytest
 
-from boatland.scenario_check import load_checked
+from boatland.checks.files import load_checked
 
 CTV24_LANDING = Path(__file__).resolve().parents[2] / "scenarios" / "ctv24_landing.toml"
 

@@ -4,6 +4,7 @@ import numpy as np
 import pytest
 
 from boatland.trial.simulate import BlowUpError, simulate
+from boatland.landing.setup import Setup, landing_setup
 
 
 def test_calm_water_holds_the_thrust_symmetrically(landing):
@@ -64,7 +65,7 @@ def test_progress_is_reported_up_to_the_last_step(landing):
     sc = sc.replace({"simulation.duration": 60.0})
     seen = []
     r = simulate(sc, db, progress=lambda done, total: seen.append((done, total)))
-    n = sc.n_steps(db)
+    n = landing_setup(sc, db).n_steps
     assert seen and all(total == n for _, total in seen)
     assert [d for d, _ in seen] == sorted(d for d, _ in seen) and seen[-1][0] == n
     assert r.completed and len(r.t) == n + 1
@@ -118,19 +119,21 @@ def test_ramps_are_the_whole_series_formulas_bit_for_bit(landing):
         assert wave_ramp(s, dt, n).tobytes() == expected.tobytes()
 
 
+@pytest.mark.slow
 def test_a_trial_from_shipped_kernel_arrays_and_pile_tables_is_the_same_trial(landing, monkeypatch):
     """What a campaign makes once and ships (kernel arrays, the pile's ω tables; pickled as to a worker)
     gives the trial simulate makes by itself, bit for bit — and nothing is made again."""
     import pickle
 
-    import boatland.model.pile_diffraction as pd
+    import boatland.sea.pile as pd
     import boatland.trial.simulate as sim
 
     sc, db = landing
     s = sc.replace({"simulation.duration": 150.0, "sea.Hs": 0.8, "sea.relative_direction_deg": 150.0})
     own = simulate(s, db)
-    arrays = pickle.loads(pickle.dumps(sim.motion_arrays(s, db, sim.prepare_memory(s, db))))
-    tables = pickle.loads(pickle.dumps(sim.pile_tables(s, db)))
+    setup = landing_setup(s, db)
+    arrays = pickle.loads(pickle.dumps(sim.motion_arrays(setup, setup.memory())))
+    tables = pickle.loads(pickle.dumps(sim.pile_tables(setup)))
     assert len(tables) == 1                                           # long-crested: one direction
 
     def made_again(*args, **kwargs):
@@ -139,7 +142,7 @@ def test_a_trial_from_shipped_kernel_arrays_and_pile_tables_is_the_same_trial(la
     monkeypatch.setattr(pd, "_TABLES", {})
     pd.remember_tables(tables)
     monkeypatch.setattr(pd, "pile_scattered_components", made_again)
-    monkeypatch.setattr(sim, "prepare_memory", made_again)
+    monkeypatch.setattr(Setup, "memory", made_again)
     monkeypatch.setattr(sim, "compile_motion", made_again)
     shipped = simulate(s, db, arrays=arrays)
     for name in ("x", "v", "F_exc", "mode", "fn", "ft", "tpos"):
@@ -155,10 +158,10 @@ def test_the_same_seed_gives_the_same_sea_whatever_the_duration(landing):
 
     sc, db = landing
     short, long_ = sc.replace({"simulation.duration": 60.0}), sc.replace({"simulation.duration": 600.0})
-    waves = sc.wave_model(db)
+    waves = landing_setup(sc, db).waves
     a, b = waves.realise(sc.simulation.seed, 60.0), waves.realise(sc.simulation.seed, 600.0)
     assert a.size == b.size > 256 and all(np.array_equal(p, q) for p, q in zip(a, b))
-    dt = sc.time_step(db)
+    dt = landing_setup(sc, db).dt
     n = int(round(60.0 / dt)) + 1
     eta60 = elevation_series(a, 10.0, 0.0, 0.0, dt, n)
     eta600 = elevation_series(b, 10.0, 0.0, 0.0, dt, int(round(600.0 / dt)) + 1)[:n]

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from boatland.trial.events import Event
-from boatland.trial.inputs import heading_name, inputs_text
+from boatland.scenario.inputs import heading_name, inputs_text
 from boatland.trial.simulate import simulate
 from boatland.trial.verdict import fmt_angle, fmt_force, fmt_length, merge_events, rounded
 

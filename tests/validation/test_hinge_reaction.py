@@ -45,7 +45,7 @@ the wrong sign at 0.9 rad/s. (ii) 1 MN m s/rad extra linear yaw damping in both 
 contact leaves yaw about it neutral (the follower thrust passes through it), so the start-up sets the
 vessel yawing slowly (0.04° over 300 s), which the linearisation about zero yaw does not see. (iii) The
 fender's face turns with the vessel's yaw, so its static normal force is a follower force too
-(:meth:`boatland.model.landed.ContactLaw.geometric_stiffness`; without it the compliant horizontal force
+(:meth:`boatland.landing.law.ContactLaw.geometric_stiffness`; without it the compliant horizontal force
 is 8 % off). A point fender on the round tube instead drifts 2.3 cm sideways in 300 s here, which tilts
 its normal by 14° on a tube compressed to 9.5 cm radius — far outside the linear model, so the shipped
 scenarios use fender lines.
@@ -105,6 +105,7 @@ def test_stick_force_is_hinge_reaction_bow_quartering(ctv24, T, shear):
         assert_close(td[c], fd[c], what)
 
 
+@pytest.mark.slow
 def test_a_stiff_rubber_tends_to_the_rigid_stick(ctv24):
     """Bow-quartering seas, T = 7 s: the time domain's stuck forces (first harmonics: normal, vertical,
     horizontal) with the rubber 10× and 100× as stiff in shear as the default (3 MN/m) against the rigid

@@ -27,11 +27,11 @@ import pytest
 
 from boatland.campaign.isee import SampleSpec, execute_sample, run_estimates, trial_number
 from boatland.campaign.plan import load_campaign
-from boatland.campaign.pool import Pool
+from boatland.campaign.executor import Executor
 from boatland.campaign.stats import clopper_pearson
 from boatland.campaign.store import row_dtype
 from boatland.campaign.isee import ISEE_FIELDS
-from boatland.scenario_check import load, resolve_database
+from boatland.checks.files import load, resolve_database
 
 REPO = Path(__file__).resolve().parents[2]
 LOADERS = (load, resolve_database)
@@ -77,7 +77,7 @@ def compare(tmp_path, which):
         camp = load_campaign(src, load_scenario=load)
     names = ["first slip"]
     out = []
-    with Pool("local", 2) as pool:
+    with Executor("local", 2) as pool:
         for case, hs in enumerate(levels):
             # ISEE: batches of 20 until the CoV is reached (as run_isee decides, here on one level)
             isee = []
@@ -110,6 +110,7 @@ def check(results, which):
         assert 0.003 < p < 0.3
 
 
+@pytest.mark.slow
 def test_head_seas_against_brute_force(tmp_path):
     check(compare(tmp_path, "head"), "head")
 

@@ -23,11 +23,13 @@ import pytest
 
 from boatland.campaign.plan import trial_seed
 from boatland.contact.fender import STICK
-from boatland.freqdomain.screening import LandingSetup, landed_response
+from boatland.freqdomain.landing import LandingSetup
+from boatland.freqdomain.screening import landed_response
 from pathlib import Path
 
-from boatland.scenario_check import load_checked
-from boatland.trial.simulate import exposure_start, prepare_memory, simulate
+from boatland.checks.files import load_checked
+from boatland.landing.setup import landing_setup
+from boatland.trial.simulate import exposure_start, simulate
 
 HS, TP, BETA, ACCESS, SEEDS = 0.04, 7.0, 90.0, 1800.0, 4
 CTV24_LANDING = Path(__file__).resolve().parents[2] / "scenarios" / "ctv24_landing.toml"   # the figures' vessel
@@ -40,9 +42,10 @@ def beam():
     return s.replace({"simulation.duration": exposure_start(s) + ACCESS}), db
 
 
+@pytest.mark.slow
 def test_landed_roll_is_not_locked_and_matches_the_time_domain(beam):
     s, db = beam
-    memory = prepare_memory(s, db)
+    memory = landing_setup(s, db).memory()
     sums = np.zeros(4)
     for k in range(SEEDS):
         r = simulate(s.replace({"simulation.seed": trial_seed(13, k)}), db, memory=memory)

@@ -17,7 +17,7 @@ import math
 import numpy as np
 import pytest
 
-from boatland.model.hull import panel_normals_areas
+from boatland.vessel.wigley import panel_normals_areas
 from boatland.waves.diffraction import (arc_plate_force, cylinder_field, n_terms, pile_force,
                                         scattering_coefficients)
 

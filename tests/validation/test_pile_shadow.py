@@ -14,7 +14,7 @@ import pytest
 
 from boatland.freqdomain.rao import free_rao
 from boatland.hydro.builtin import load_builtin
-from boatland.model.pile_diffraction import pile_scattered_excitation
+from boatland.sea.pile import pile_scattered_excitation
 from boatland.waves.spectra import jonswap
 
 A_PILE = 3.25  # 6.5 m monopile

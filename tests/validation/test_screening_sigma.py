@@ -26,7 +26,7 @@ from boatland.freqdomain import LandingSetup
 from boatland.freqdomain.screening import default_omega, landed_response
 from pathlib import Path
 
-from boatland.scenario_check import load, resolve_database
+from boatland.checks.files import load, resolve_database
 from boatland.trial.simulate import simulate
 
 T_START = 100.0  # [s] transients left out

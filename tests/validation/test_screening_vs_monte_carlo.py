@@ -8,7 +8,7 @@ stick → slip of either contact (a slip during the ramp counts at the start of 
 domain: the screening each campaign stores beside its cases (Wu 2014 as Grøtting 2015 §3.2.1/§3.4
 with Rayleigh peaks per Tp cycle; each contact's own margins, the same contacts, pile diffraction and
 preload as the time domain; margins correlated at ρ ≥ 0.99 counted once —
-:func:`boatland.freqdomain.screening.distinct_events`). The check of issue 13: at two Hs per heading
+:func:`boatland.freqdomain.statistics.distinct_events`). The check of issue 13: at two Hs per heading
 where the time domain's P lies in 0.1–0.9, the screening's P lies inside the Clopper–Pearson 95 %
 interval of the 24 trials.
 
@@ -43,6 +43,7 @@ CASES = {180.0: (0.23, 0.26), 135.0: (0.125, 0.13), 90.0: (0.09, 0.10)}
 SEEDS = 24
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("heading", list(CASES))
 def test_screening_probability_lies_in_the_monte_carlo_interval(tmp_path, heading):
     # boatland.validation.campaigns: the campaign of `boatland validate`'s screening-vs-monte-carlo case

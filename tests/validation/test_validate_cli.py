@@ -46,6 +46,7 @@ def quick(tmp_path_factory):
     return r, out, (out / "README.md").read_text(encoding="utf-8") if (out / "README.md").is_file() else ""
 
 
+@pytest.mark.slow
 def test_quick_report_names_every_case_with_its_reference_and_tolerance(quick):
     r, out, report = quick
     assert report, r.stderr[-3000:]
@@ -67,6 +68,7 @@ def test_quick_report_names_every_case_with_its_reference_and_tolerance(quick):
     assert data["passed"] == (r.returncode == 0)
 
 
+@pytest.mark.slow
 def test_quick_report_has_date_version_commit_machine_and_figures(quick):
     r, out, report = quick
     head = report.split("## Summary")[0]

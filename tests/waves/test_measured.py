@@ -6,8 +6,9 @@ import numpy as np
 import pytest
 
 from boatland.errors import BoatlandInputError
-from boatland.model.seastate import MeasuredRecord, SeaState, SpectrumPart
-from boatland.model.records import read_elevation_csv
+from boatland.sea.spectra import SpectrumPart
+from boatland.sea.states import MeasuredRecord, SeaState
+from boatland.sea.records import read_elevation_csv
 from boatland.waves.measured import record_components
 from boatland.waves.realisation import Components
 from boatland.waves.synthesis import elevation, elevation_series

@@ -13,7 +13,8 @@ import numpy as np
 import pytest
 from scipy import fft as sfft
 
-from boatland.model.seastate import SeaState, SpectrumPart
+from boatland.sea.spectra import SpectrumPart
+from boatland.sea.states import SeaState
 from boatland.waves.nufft import M_SP, R_OVERSAMPLE, harmonic_sum_nufft, nufft_grid, nufft_layout
 from boatland.waves.synthesis import harmonic_sum
 

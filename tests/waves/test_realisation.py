@@ -20,11 +20,12 @@ import numpy as np
 import pytest
 from scipy import signal, special, stats
 
-from boatland.model.seastate import SeaState, SpectrumPart
+from boatland.sea.spectra import SpectrumPart
+from boatland.sea.states import SeaState
 from boatland.waves.realisation import (as_seed_sequence, n_components_for, part_rng,
                                         random_frequency_components, regular_components)
 from boatland.waves.spectra import bin_variance, spectrum_band
-from boatland.waves.synthesis import _harmonic_sum, elevation, elevation_series, harmonic_sum
+from boatland.waves.synthesis import harmonic_sum_kernel, elevation, elevation_series, harmonic_sum
 
 SEED = 20240917
 
@@ -82,7 +83,7 @@ def test_changing_one_part_leaves_the_other_parts_phases():
 @pytest.mark.parametrize("threads", [1, 2])
 def test_result_does_not_depend_on_thread_count(threads):
     """The kernels are serial (no parallel=True): the sum is the same whatever numba's thread count."""
-    assert not _harmonic_sum.targetoptions.get("parallel", False)
+    assert not harmonic_sum_kernel.targetoptions.get("parallel", False)
     sea = SeaState(parts=SpectrumPart(Hs=1.0, Tp=6.0, spreading=5.0))
     c = sea.realise(SEED, 200.0)
     ref = elevation_series(c, 3.0, -2.0, 0.0, 0.1, 2001)

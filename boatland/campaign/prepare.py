@@ -1,0 +1,346 @@
+"""A campaign's work done once, before and beside its trials: the checks of every case, each case's shared
+data, the pile's tables and the frequency-domain screening.
+
+Work done once per campaign, not per trial or worker: :func:`check_cases` runs every case through the
+checks ``boatland run`` makes (:func:`boatland.checks.check`) and makes each radiation memory (IRFs and
+state-space fit) once; :func:`prepare_cases` compiles the kernel arrays of each case from it; the ω
+tables of the pile's scattered wave the trials interpolate are made once for the whole campaign, every
+wave direction of a layout in one pass (:func:`campaign_tables`, :func:`boatland.sea.pile.make_tables`).
+Every trial is shipped its case's :class:`CaseData`, so no worker makes either again. They are the values
+a worker would have made (the same functions, pinned to one BLAS thread): the store is the same bit for
+bit. With several workers the tables and then the frequency-domain screening are made in a process of
+its own (:class:`BackgroundWork`), which starts before the checks, on the core they leave idle.
+
+A worker keeps the campaign and what it made between its tasks (:func:`worker_context`).
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import warnings
+from dataclasses import dataclass
+
+import numpy as np
+
+from boatland.campaign.executor import kill_pool, process_pool
+from boatland.campaign.plan import Campaign, TrialSpec, load_campaign, trial_seed
+from boatland.reproducible import single_threaded
+from boatland.sea.spectra import SHAPES
+from boatland.trial.motion import MotionArrays
+from boatland.trial.simulate import exposure_start
+
+__all__ = ["BackgroundWork", "CaseData", "CasePreparation", "campaign_tables", "check_cases", "first_trial",
+           "case_screening", "memory_key", "prepare_cases", "start_background", "worker_context"]
+
+
+#: Per worker process: the campaign, its databases and radiation memories (:func:`worker_context`).
+_WORKER: dict = {}
+
+
+#: Per campaign process: what :func:`check_cases` made, by (campaign digest, database loader).
+_CHECKED: dict = {}
+
+
+@dataclass(frozen=True, eq=False)
+class CaseData:
+    """What every trial of one case shares, made once per campaign (:func:`prepare_cases`) and shipped with
+    the trials to whichever worker runs them.
+
+    Attributes
+    ----------
+    arrays : MotionArrays
+        The kernel arrays compiled from the case's radiation memory, which :func:`check_cases` checked
+        at the case's landed modes (:func:`boatland.trial.simulate.motion_arrays`).
+    tables : tuple of ScatteredTable
+        The ω tables of the pile's scattered wave its trials interpolate
+        (:func:`boatland.trial.simulate.pile_tables`; empty without a pile or for short-crested seas).
+    """
+
+    arrays: MotionArrays
+    tables: tuple = ()
+
+
+def worker_context(source: str, loaders) -> dict:
+    """What a worker process keeps between the tasks of one campaign file ``source``: the campaign and
+    the databases, radiation memories and checked cases it has made (``{"campaign", "db", "memory",
+    "checked"}``; one campaign at a time)."""
+    load_scenario, load_database = loaders
+    key = (source, loaders)
+    if key not in _WORKER:
+        campaign = load_campaign(source, load_scenario=load_scenario)
+        _WORKER.clear()
+        _WORKER[key] = {"campaign": campaign, "db": {}, "memory": {}, "checked": set()}
+    return _WORKER[key]
+
+
+def memory_key(dbkey: str, rad) -> tuple:
+    """The radiation memory a scenario needs: its database and radiation settings."""
+    return (dbkey, rad.method, rad.memory, rad.tail, rad.taper)
+
+
+def first_trial(campaign: Campaign, case: int) -> TrialSpec:
+    """The first trial of ``case`` (its scenario is the case's)."""
+    return TrialSpec(case * campaign.seeds, case, 0, trial_seed(campaign.master_seed, 0))
+
+
+def check_cases(campaign: Campaign, load_database) -> list[str]:
+    """The checks ``boatland run`` makes, for every case's scenario, before any trial
+    (:func:`boatland.checks.check`): the scenario against its database (dt against the fender contact,
+    the fender on the bow, ...), the limits of :mod:`boatland.checks.limits` and the radiation memory at
+    the landed modes (:func:`boatland.checks.memory.check_memory`).
+
+    Returns the warnings (one line each, naming the case); raises :class:`SpecError` with every problem
+    of every case (key paths prefixed by the case).
+
+    The radiation memories it makes are the ones the trials use (:func:`prepare_cases`); they and the
+    outcome are kept in this process for the same campaign (its :meth:`~Campaign.digest`: files and their
+    contents) and loader, so checking again (``run_campaign`` after the CLI) costs nothing.
+    """
+    return list(_checked(campaign, load_database)["warnings"])
+
+
+def _checked(campaign: Campaign, load_database) -> dict:
+    """:func:`check_cases`'s work, kept: ``{"warnings", "dbs", "memories"}``."""
+    key = (campaign.digest(), load_database)
+    if key in _CHECKED:
+        return _CHECKED[key]
+    from boatland.checks import check
+    from boatland.landing.setup import landing_setup
+    from boatland.tomlspec import SpecError
+
+    problems, warns, dbs = [], [], {}
+    memories: dict = {}
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        for case in campaign.cases:
+            sc = campaign.scenario_for(first_trial(campaign, case.index))
+            dbkey = sc.vessel.database_key
+            if dbkey not in dbs:
+                dbs[dbkey] = load_database(sc)
+            db = dbs[dbkey]
+            setup = landing_setup(sc, db)
+            mkey = memory_key(dbkey, sc.radiation)
+
+            def memory(setup=setup, mkey=mkey):    # made when the rest of the case holds, once per memory
+                if mkey not in memories:
+                    memories[mkey] = setup.memory()   # pinned to one BLAS thread, as in a trial
+                return memories[mkey]
+
+            found = check(sc, db, memory=memory, setup=setup)
+            where = f"case {case.index} ({case.label() or 'base'})"
+            problems += [(f"{where}: {k}", m) for k, m in found.problems]
+            warns += [f"{where}: {k}: {m}" for k, m in found.warnings]
+    if problems:
+        raise SpecError(campaign.source, problems)
+    _CHECKED.clear()                               # one campaign at a time: bounded memory
+    _CHECKED[key] = {"warnings": tuple(dict.fromkeys(warns)), "dbs": dbs, "memories": memories}
+    return _CHECKED[key]
+
+
+def prepare_cases(campaign: Campaign, load_database, cases=None) -> dict[int, CaseData]:
+    """Each case's :class:`CaseData`, made once in this process: the kernel arrays from the radiation
+    memory :func:`check_cases` made and checked (it runs first if it has not), and the ω tables of the
+    pile's scattered wave (≈ 0.5–1 s each for the ctv24 mesh; one per layout and wave direction, shared by
+    the cases that have the same). Pinned to one BLAS thread, as a trial: the values a worker would make.
+
+    Parameters
+    ----------
+    campaign : Campaign
+    load_database : callable
+        ``load_database(scenario) -> HydroDB`` (the edge's loader).
+    cases : iterable of int, optional
+        The cases to prepare (default: all).
+
+    Returns
+    -------
+    dict
+        case → CaseData; a case whose preparation fails (a state-space pole too fast for its dt, the
+        hull inside the pile, ...) is left out: its trials then make everything themselves and record
+        the same error as before.
+    """
+    prepared = CasePreparation(campaign, load_database)
+    return {case: data for case in (range(len(campaign.cases)) if cases is None else cases)
+            if (data := prepared.get(case)) is not None}
+
+
+class CasePreparation:
+    """case → :class:`CaseData` (or None), made the first time it is asked for — when the first trial of the
+    case is handed to the executor, so that the workers start on the first case while the next ones are
+    prepared. Kernel arrays are compiled once per radiation memory and time step; the pile's tables of
+    every case are made together when the first case is (:func:`_campaign_tables`), or taken from
+    ``background`` (:class:`BackgroundWork`) which made them beside the checks."""
+
+    def __init__(self, campaign: Campaign, load_database, background: "BackgroundWork | None" = None):
+        self.campaign, self.checked = campaign, _checked(campaign, load_database)
+        self.load_database, self.background = load_database, background
+        self.cases: dict = {}
+        self.arrays: dict = {}
+        self.tables_in = False
+
+    def get(self, case: int) -> CaseData | None:
+        if case not in self.cases:
+            with warnings.catch_warnings(), single_threaded():
+                warnings.simplefilter("ignore")
+                if not self.tables_in:
+                    from boatland.sea.pile import remember_tables
+
+                    self.tables_in = True
+                    remember_tables(self.background.tables() if self.background is not None else
+                                    campaign_tables(self.campaign, self.load_database, self.checked["dbs"]))
+                try:
+                    self.cases[case] = self._prepare(case)
+                except Exception:  # noqa: BLE001 — its trials meet it again and record it
+                    self.cases[case] = None
+        return self.cases[case]
+
+    def _prepare(self, case: int) -> CaseData:
+        from boatland.landing.setup import landing_setup
+        from boatland.trial.simulate import motion_arrays, pile_tables
+
+        sc = self.campaign.scenario_for(first_trial(self.campaign, case))
+        dbkey = sc.vessel.database_key
+        setup = landing_setup(sc, self.checked["dbs"][dbkey])
+        mkey = memory_key(dbkey, sc.radiation)
+        akey = (mkey, setup.dt)
+        if akey not in self.arrays:
+            self.arrays[akey] = motion_arrays(setup, self.checked["memories"][mkey])
+        return CaseData(arrays=self.arrays[akey], tables=tuple(pile_tables(setup)))
+
+
+def campaign_tables(campaign: Campaign, load_database, dbs: dict | None = None) -> list:
+    """The ω tables of the pile's scattered wave of every case (:func:`boatland.trial.simulate.pile_tables`),
+    the directions of each database and layout made together
+    (:func:`boatland.sea.pile.make_tables`; three directions of the ctv24: 1.4 s instead of
+    2.6 s). None at all when there are more than a process keeps (then each case makes its own), and none
+    for a case whose tables fail: its own preparation meets the error again."""
+    from boatland.landing.setup import landing_setup
+    from boatland.sea.pile import TABLE_CACHE_SIZE, make_tables
+    from boatland.trial.simulate import pile_table_request
+
+    requests: dict = {}
+    dbs = {} if dbs is None else dict(dbs)      # databases by key, loaded where missing
+    for case in campaign.cases:
+        try:
+            sc = campaign.scenario_for(first_trial(campaign, case.index))
+            dbkey = sc.vessel.database_key
+            if dbkey not in dbs:
+                dbs[dbkey] = load_database(sc)
+            request = pile_table_request(landing_setup(sc, dbs[dbkey]))
+        except Exception:  # noqa: BLE001
+            continue
+        if request is not None:
+            requests.setdefault(dbkey, []).append(request)
+    if sum(np.unique(r.theta).size for rs in requests.values() for r in rs) > TABLE_CACHE_SIZE:
+        return []
+    tables = []
+    for dbkey, rs in requests.items():
+        try:
+            tables += make_tables(dbs[dbkey], rs)
+        except Exception:  # noqa: BLE001 — e.g. the hull inside the pile: the cases say so themselves
+            continue
+    return tables
+
+
+def start_background(campaign: Campaign, loaders, executor: str = "local",
+                     workers: int | None = None) -> "BackgroundWork | None":
+    """The campaign's work beside the trials (:class:`BackgroundWork`: the pile's tables, then the
+    frequency-domain screening) started in a process of its own — or None when the trials run in this
+    process (one local worker: the tables are then made with the first case, the screening after the
+    trials, here). Pass it to :func:`run_campaign`; :meth:`BackgroundWork.close` it if the campaign does
+    not run."""
+    if executor == "local" and (workers or os.cpu_count() or 1) == 1:
+        return None
+    return BackgroundWork(campaign, loaders)
+
+
+def case_screening(campaign: Campaign, loaders) -> tuple[np.ndarray, list[str]]:
+    """The frequency-domain screening's P(slip within the access) per case and why there is none
+    (:func:`_screening`), pinned to one BLAS thread and silent: the campaign's own checks say what is
+    wrong with a case (the screening may run before them)."""
+    with single_threaded(), warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return _screening(campaign, loaders)
+
+
+def _tables_job(campaign: Campaign, loaders) -> list:
+    with single_threaded(), warnings.catch_warnings():    # the values a trial's process would make
+        warnings.simplefilter("ignore")
+        return campaign_tables(campaign, loaders[1])
+
+
+class BackgroundWork:
+    """What a campaign computes once beside its trials, in a process of its own started before its checks
+    (on the core they leave idle): first the ω tables of the pile's scattered wave of every case
+    (:func:`campaign_tables`, which the first case's preparation waits for), then the frequency-domain
+    screening (:func:`_screening`, read when the trials are done). Pinned to one BLAS thread like every
+    trial, so its values are the ones the campaign's own process would make; if the process cannot give
+    them, they are made here."""
+
+    def __init__(self, campaign: Campaign, loaders):
+        self.campaign, self.loaders = campaign, loaders
+        self.pool = process_pool(1)
+        self.futures = (self.pool.submit(_tables_job, campaign, loaders),      # one process: in this order
+                        self.pool.submit(case_screening, campaign, loaders))
+
+    def tables(self) -> list:
+        """The pile's tables of every case (:func:`campaign_tables`)."""
+        try:
+            return self.futures[0].result()
+        except Exception:  # noqa: BLE001 — e.g. the process died: the campaign's own process makes them
+            return _tables_job(self.campaign, self.loaders)
+
+    def screening(self) -> tuple[np.ndarray, list[str]]:
+        """The screening's P(slip) per case and why there is none (:func:`_screening`)."""
+        try:
+            return self.futures[1].result()
+        except Exception:  # noqa: BLE001 — e.g. the process died: the campaign's own process computes it
+            return case_screening(self.campaign, self.loaders)
+
+    def close(self) -> None:
+        """Stop the process now if it is still running (the campaign stopped early)."""
+        if all(f.done() for f in self.futures):
+            self.pool.shutdown(wait=True)
+        else:
+            kill_pool(self.pool)
+
+
+def _screening(campaign: Campaign, loaders) -> tuple[np.ndarray, list[str]]:
+    """The frequency-domain screening's P(slip within the access) per case (Wu 2014 as in Grøtting 2015
+    §3.2.1, §3.4, eq. 3.38, Rayleigh; the improved landing — each contact on its own, the fender's
+    normal and shear laws, the pile's scattered wave when the trials have it), computed from each case's
+    own scenario and database: the prediction beside the Monte Carlo result (Grøtting 2015 Tables
+    4.14–4.15). Returns the probabilities (NaN where none) and, per case, why there is none ("" where
+    there is one)."""
+    from boatland.freqdomain.landing import LandingSetup
+    from boatland.freqdomain.screening import sea_response
+    from boatland.landing.setup import landing_setup
+
+    out = np.full(len(campaign.cases), math.nan)
+    why = [""] * len(campaign.cases)
+    dbs: dict = {}
+    for case in campaign.cases:
+        try:
+            sc = campaign.base.replace(dict(case.values))
+            parts = getattr(sc.sea.waves, "parts", None) if sc.sea is not None else None
+            if not parts:
+                why[case.index] = "no spectral sea (the screening needs spectral parts: " + ", ".join(s.label for s in SHAPES.values()) + ")"
+                continue
+            if sc.fender is None:
+                why[case.index] = "no fender"
+                continue
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                key = sc.vessel.database_key
+                if key not in dbs:
+                    dbs[key] = loaders[1](sc)
+                db = dbs[key]
+                setup = landing_setup(sc, db)
+                landing = LandingSetup.from_scenario(sc, db, setup=setup)
+                access = campaign.access if campaign.access is not None else \
+                    sc.simulation.duration - exposure_start(sc)
+                out[case.index] = sea_response(db, landing, parts, access_duration=access,
+                                               water_depth=getattr(setup.waves, "water_depth", None)).p_access
+        except Exception as exc:  # noqa: BLE001 — the report says why; the Monte Carlo stands
+            why[case.index] = f"{type(exc).__name__}: {exc}"[:190]
+    return out, why

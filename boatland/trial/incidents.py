@@ -1,0 +1,223 @@
+r"""Incident definitions: what counts as an incident of a landing, each one object with its name, its
+scenario key and how it is found in a trial.
+
+A definition is a small frozen record with a ``name`` (the same string in every output — the summary, the
+verdict, the run log, a campaign store's column, a report's table) and two detectors on a finished trial
+(:class:`~boatland.trial.result.Result`):
+
+- :meth:`Incident.first_time` — the first time in the trial after the settling (what ``boatland run``
+  reports);
+- :meth:`Incident.in_access` — the first time at or after the start of an access (what a rare-event
+  campaign estimates, :mod:`boatland.campaign.isee`).
+
+=========================  ===================================  =============================================
+definition                 scenario / campaign ``[incidents]``  counts
+=========================  ===================================  =============================================
+:class:`FirstSlip`         (always, in campaigns)               the first stick → slip of the fender
+:class:`SlipDistance`      ``slip_distance = [0.1, …]`` [m]     a fender point farther than d from where it
+                                                                landed (Grøtting 2015 §3.3: 10 cm)
+:class:`RollAbove`         ``roll_limit_deg = [10.0, …]``       roll beyond the limit (Grøtting 2015 §4.1.2)
+:class:`ContactLoss`       (always, with a fender)              a contact opens, or slides off the landing
+:class:`SlidOff`           (always, with a fender)              the fender slides off the end of a tube
+=========================  ===================================  =============================================
+
+A new definition is a class here with its entry in :data:`FROM_KEY` (and its key in the scenario schema,
+:mod:`boatland.scenario.schema`): every trial, campaign, store and report then carries it.
+:func:`parse_incident` turns a stored name back into its definition.
+
+References: Grøtting, H. (2015), *Small Water Plane Area Solutions for Access of Offshore Wind Turbines*,
+MSc thesis, NTNU — §3.3 (the incident slip distance), §4.1.2 (roll limits).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import ClassVar
+
+import numpy as np
+
+from boatland.contact.fender import OFF, OPEN
+from boatland.trial.events import SLID_OFF, first_entry, first_exceedance
+
+__all__ = ["FROM_KEY", "ContactLoss", "FirstSlip", "Incident", "RollAbove", "SlidOff", "SlipDistance",
+           "campaign_incidents", "parse_incident", "trial_incidents"]
+
+
+class Incident:
+    """One incident definition (subclasses are frozen dataclasses): ``name`` and the two detectors.
+
+    A definition with a parameter (a threshold from the ``[incidents]`` table) has one field, the ``key``
+    of its table entry and a ``template`` that formats the parameter into its name."""
+
+    #: The ``[incidents]`` key whose values make definitions of this kind (None: not set by a key).
+    key: ClassVar[str | None] = None
+    #: Its name, with ``{:g}`` for the parameter (a definition without one: the name itself).
+    template: ClassVar[str] = ""
+
+    @property
+    def name(self) -> str:
+        fields = list(self.__dict__.values())
+        return self.template.format(*fields) if fields else self.template
+
+    def first_time(self, r) -> float | None:
+        """First time [s] of the incident in trial ``r`` after its settling (None: it did not happen)."""
+        raise NotImplementedError  # pragma: no cover
+
+    def in_access(self, r, t_access: float) -> float | None:
+        """First time [s] of the incident at or after ``t_access`` (None: not in the access)."""
+        raise NotImplementedError  # pragma: no cover
+
+    def __str__(self) -> str:
+        return self.name
+
+
+@dataclass(frozen=True)
+class FirstSlip(Incident):
+    """The first stick → slip of the fender after the settling (any contact, any distance)."""
+
+    template: ClassVar[str] = "first slip"
+
+    def first_time(self, r) -> float | None:
+        rows, _ = r.slip_rows
+        after = rows[rows >= r.settle_row]
+        return float(r.t[after[0]]) if after.size else None
+
+    def in_access(self, r, t_access: float) -> float | None:
+        slips = [e.t for e in r.slip_events() if e.t >= t_access - 1e-9]
+        return slips[0] if slips else None
+
+
+@dataclass(frozen=True)
+class SlipDistance(Incident):
+    """A fender point farther than ``distance`` [m] from where it landed after the settling
+    (:meth:`boatland.trial.result.Result.landing_offset`; Grøtting 2015's incident slip distance)."""
+
+    distance: float
+    key: ClassVar[str] = "slip_distance"
+    template: ClassVar[str] = "slip > {:g} m"
+
+    def first_time(self, r) -> float | None:
+        worst = r.worst_offset
+        return first_exceedance(r.t, worst, self.distance) if worst is not None else None
+
+    def in_access(self, r, t_access: float) -> float | None:
+        if not r.mode.shape[1]:
+            return None
+        t = r.t
+        k0 = int(np.searchsorted(t, t_access - 1e-9))
+        off = r.landing_offset()
+        worst = np.where(np.isnan(off), 0.0, off).max(axis=1)
+        return first_exceedance(t[k0:], worst[k0:], self.distance) if k0 < t.size else None
+
+
+@dataclass(frozen=True)
+class RollAbove(Incident):
+    """Roll beyond ``limit_deg`` [deg] (either side)."""
+
+    limit_deg: float
+    key: ClassVar[str] = "roll_limit_deg"
+    template: ClassVar[str] = "roll > {:g}°"
+
+    def first_time(self, r) -> float | None:
+        return first_exceedance(r.t, r.x[:, 3], np.radians(self.limit_deg))
+
+    def in_access(self, r, t_access: float) -> float | None:
+        t = r.t
+        k0 = int(np.searchsorted(t, t_access - 1e-9))
+        return first_exceedance(t[k0:], r.x[k0:, 3], math.radians(self.limit_deg)) if k0 < t.size else None
+
+
+@dataclass(frozen=True)
+class ContactLoss(Incident):
+    """A contact opens after the settling, or slides off the landing."""
+
+    template: ClassVar[str] = "contact loss"
+
+    def first_time(self, r) -> float | None:
+        if not r.mode.shape[1]:
+            return None
+        k0 = r.settle_row
+        lost = [t for t in (_entry(r, OPEN, k0), _entry(r, OFF, k0)) if t is not None]
+        return min(lost) if lost else None
+
+    def in_access(self, r, t_access: float) -> float | None:
+        """Contact lost (or slid off) from ``t_access`` on — or before it, if the trial ended there."""
+        lost = [e.t for e in r.events if e.kind in ("contact lost", SLID_OFF)]
+        after = [x for x in lost if x >= t_access - 1e-9]
+        return after[0] if after else (t_access if lost and r.t[-1] < t_access else None)
+
+
+@dataclass(frozen=True)
+class SlidOff(Incident):
+    """The fender slid off the end of a tube (the trial ends there)."""
+
+    template: ClassVar[str] = SLID_OFF
+
+    def first_time(self, r) -> float | None:
+        return _entry(r, OFF, 0) if r.mode.shape[1] else None
+
+    def in_access(self, r, t_access: float) -> float | None:
+        t = self.first_time(r)
+        return None if t is None else max(t, t_access)
+
+
+def _entry(r, mode: int, k_start: int) -> float | None:
+    k = first_entry(r.mode, mode, k_start)
+    return None if k < 0 else float(r.t[k])
+
+
+#: ``[incidents]`` key → the definition its values make (one per value).
+FROM_KEY = {cls.key: cls for cls in (SlipDistance, RollAbove)}
+
+#: Names of the definitions without a parameter.
+_FIXED = {d.name: d for d in (FirstSlip(), ContactLoss(), SlidOff())}
+#: A name with a parameter → its definition: each template with its ``{:g}`` matched.
+_PARAMETERISED = tuple((re.compile(re.escape(cls.template).replace(re.escape("{:g}"), r"(\S+)")), cls)
+                       for cls in FROM_KEY.values())
+
+
+def _keyed(incidents: Mapping | object | None) -> list[Incident]:
+    """The definitions of an ``[incidents]`` table (a mapping, or the scenario's
+    :class:`~boatland.scenario.parts.Incidents`), in the order of :data:`FROM_KEY`; a trial without one
+    counts slips over 0.1 m (Grøtting 2015)."""
+    if incidents is None:
+        return [SlipDistance(0.1)]
+    values = incidents if isinstance(incidents, Mapping) else incidents.values
+    return [FROM_KEY[key](v) for key in FROM_KEY for v in values.get(key, ())]
+
+
+def trial_incidents(incidents, contacts: bool = True) -> tuple[Incident, ...]:
+    """What a trial reports (:meth:`boatland.trial.result.Result.incident_times`): each slip distance and
+    roll limit, then — with contacts — contact loss and sliding off the landing."""
+    fixed = [ContactLoss(), SlidOff()] if contacts else []
+    return tuple(_keyed(incidents) + fixed)
+
+
+def campaign_incidents(incidents, fender: bool = True) -> tuple[Incident, ...]:
+    """What a campaign counts per trial (its store's columns): the first slip, each slip distance and roll
+    limit, and — with a fender — contact loss (sliding off the landing is one)."""
+    return (FirstSlip(), *_keyed(incidents), *((ContactLoss(),) if fender else ()))
+
+
+def parse_incident(name: str) -> Incident:
+    """The definition a name stands for (``"slip > 0.1 m"`` → ``SlipDistance(0.1)``): stores and run logs
+    keep names.
+
+    Raises
+    ------
+    ValueError
+        Not the name of a definition.
+    """
+    if name in _FIXED:
+        return _FIXED[name]
+    for pattern, cls in _PARAMETERISED:
+        m = pattern.fullmatch(name)
+        if m:
+            try:
+                return cls(float(m.group(1)))
+            except ValueError:
+                break
+    raise ValueError(f"{name!r} is not the name of an incident definition")

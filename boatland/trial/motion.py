@@ -1,0 +1,243 @@
+"""Compile a vessel's database and radiation memory into the arrays of the RK4 Cummins kernel."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from boatland.contact.fender import Contacts, no_contacts
+from boatland.integrate.cummins import STATUS_MESSAGES, run_cummins
+from boatland.vessel.database import HydroDB
+from boatland.vessel.radiation import RadiationMemory
+
+__all__ = ["MotionArrays", "compile_motion", "modal_layout"]
+
+
+@dataclass(frozen=True, eq=False)
+class MotionArrays:
+    """Everything :func:`boatland.integrate.run_cummins` needs about the vessel (no time series)."""
+
+    Mt_inv: np.ndarray
+    C: np.ndarray
+    conv: bool
+    Kh: np.ndarray
+    pairs_i: np.ndarray
+    pairs_j: np.ndarray
+    n_hist: int
+    ss_A: np.ndarray
+    ss_B: np.ndarray
+    ss_C: np.ndarray
+    ss_seg: np.ndarray
+    ss_rows: np.ndarray
+
+    @property
+    def n_states(self) -> int:
+        """Number of state-space memory states (the guards of :func:`modal_layout` not counted)."""
+        return self.ss_B.shape[0] - 2
+
+    @classmethod
+    def without_memory(cls, Mt, C) -> "MotionArrays":
+        """A system with no radiation memory (K ≡ 0): (M + A∞) x'' + C x = F — for analytic checks."""
+        e = np.zeros(0, dtype=np.int64)
+        return cls(np.linalg.inv(np.asarray(Mt, dtype=float)), np.asarray(C, dtype=float).copy(), True,
+                   np.zeros((0, 1)), e, e, 0, *_no_state_space())
+
+    @staticmethod
+    def allocate_outputs(n_steps: int, nc: int) -> dict:
+        """Zeroed output arrays of :meth:`run` for ``n_steps`` steps and ``nc`` contacts."""
+        return {
+            "x": np.zeros((n_steps + 1, 6)), "v": np.zeros((n_steps + 1, 6)),
+            "mode": np.zeros((n_steps + 1, nc), dtype=np.int64), "fn": np.zeros((n_steps + 1, nc)),
+            "ft": np.zeros((n_steps + 1, nc, 2)), "needed": np.zeros((n_steps + 1, nc)),
+            "available": np.zeros((n_steps + 1, nc)), "tpos": np.zeros((n_steps + 1, nc, 2)),
+            "slide": np.zeros((n_steps + 1, nc, 2)), "work": np.zeros((n_steps + 1, nc)),
+        }
+
+    def run(self, dt: float, n_steps: int, *, F_ext=None, thrust=None, r_p=(0.0, 0.0, 0.0), x0=None, v0=None,
+            Bv=None, Bq=None, contacts=None, v_tol: float = 1e-6, limit_trans: float = 1e3,
+            limit_rot: float = 1.0, progress=None, out=None, gate=None):
+        """Integrate; returns a dict of arrays (t, x, v and, with contacts, mode, fn, ft, needed,
+        available, tpos, slide, work) plus ``status`` and ``message``.
+
+        ``F_ext`` (2 n_steps + 1, 6) and ``thrust`` (2 n_steps + 1,) are sampled at half steps;
+        ``contacts`` is a :class:`boatland.contact.fender.Contacts` in the local frame (None: none). ``progress``, an int64 array of shape
+        (1,), receives the number of steps completed while the kernel runs (it releases the GIL, so
+        another thread can poll it for a progress bar). ``out``: preallocated output arrays from
+        :meth:`allocate_outputs` (rows below the progress count are final while the kernel runs — a
+        logger in another thread may read them); by default they are allocated here. ``gate``, an int64
+        array of shape (1,): the kernel starts step n only when ``gate[0] ≥ n`` (a logger keeps it a block
+        ahead of what it has written, see :func:`boatland.integrate.run_cummins`); default: never waits.
+        """
+        m = 2 * n_steps + 1
+        F_ext = np.zeros((m, 6)) if F_ext is None else np.ascontiguousarray(F_ext, dtype=float)
+        thrust = np.zeros(m) if thrust is None else np.ascontiguousarray(thrust, dtype=float)
+        if F_ext.shape != (m, 6) or thrust.shape != (m,):
+            raise ValueError(f"F_ext must be ({m}, 6) and thrust ({m},) for {n_steps} steps (half steps)")
+        vec = lambda a: np.zeros(6) if a is None else np.asarray(a, dtype=float).reshape(6)  # noqa: E731
+        if contacts is None:
+            contacts = no_contacts()
+        elif not isinstance(contacts, Contacts):
+            raise ValueError("contacts must be a boatland.contact.fender.Contacts (see contact_set)")
+        one_int64 = lambda a: isinstance(a, np.ndarray) and a.dtype == np.int64 and a.shape == (1,)  # noqa: E731
+        if progress is None:
+            progress = np.zeros(1, dtype=np.int64)
+        elif not one_int64(progress):
+            raise ValueError("progress must be a numpy int64 array of shape (1,)")
+        if gate is None:
+            gate = np.array([n_steps], dtype=np.int64)
+        elif not one_int64(gate):
+            raise ValueError("gate must be a numpy int64 array of shape (1,)")
+        nc = contacts[0].shape[0]
+        if out is None:
+            out = self.allocate_outputs(n_steps, nc)
+        elif out["x"].shape != (n_steps + 1, 6) or out["mode"].shape != (n_steps + 1, nc):
+            raise ValueError(f"out arrays must be allocate_outputs({n_steps}, {nc})")
+        status, last = run_cummins(
+            float(dt), int(n_steps), self.Mt_inv, self.C, vec(Bv), vec(Bq), F_ext, thrust,
+            np.asarray(r_p, dtype=float), vec(x0), vec(v0), self.conv, self.Kh, self.pairs_i, self.pairs_j,
+            self.n_hist, self.ss_A, self.ss_B, self.ss_C, self.ss_seg, self.ss_rows, contacts, float(v_tol),
+            float(limit_trans), float(limit_rot), out["x"], out["v"], out["mode"], out["fn"], out["ft"],
+            out["needed"], out["available"], out["tpos"], out["slide"], out["work"], progress, gate)
+        out = {k: a[:last + 1] for k, a in out.items()}
+        out["t"] = np.arange(last + 1) * dt
+        out["status"], out["message"] = int(status), STATUS_MESSAGES[int(status)]
+        return out
+
+
+def _resample_irf(memory: RadiationMemory, pairs, h: float, t_max: float) -> np.ndarray:
+    """K of the given pairs at t = k h, k = 0 … t_max/h (linear interpolation of the stored IRF)."""
+    irf = memory.irf
+    t = np.arange(int(round(t_max / h)) + 1) * h
+    return np.array([np.interp(t, irf.t, irf.K[i, j], right=0.0) for i, j in pairs]).reshape(len(pairs), t.size)
+
+
+def rk4_amplification(z: np.ndarray) -> np.ndarray:
+    """|R(z)| of classic RK4 on ẏ = p y with z = p Δt: R = 1 + z + z²/2 + z³/6 + z⁴/24."""
+    return np.abs(1 + z + z ** 2 / 2 + z ** 3 / 6 + z ** 4 / 24)
+
+
+def _check_rk4_stable(blocks, dt: float) -> None:
+    """Every state-space pole must lie in RK4's stability region at ``dt`` (|R(pΔt)| ≤ 1)."""
+    for i, j, f in blocks:
+        p = np.linalg.eigvals(f.A)
+        if np.any(rk4_amplification(p * dt) > 1.0):
+            fastest = float(np.max(np.abs(p)))
+            raise ValueError(f"the state-space fit of pair ({i + 1},{j + 1}) has a pole of |p| = {fastest:.3g} "
+                             f"rad/s, outside RK4's stability region at dt = {dt:g} s; use dt ≤ "
+                             f"{2.5 / fastest:.3g} s or the convolution")
+
+
+def compile_motion(db: HydroDB, memory: RadiationMemory, dt: float, *, method: str = "convolution",
+                   memory_length: float | None = None) -> MotionArrays:
+    """Kernel arrays for ``db`` with radiation ``memory`` at time step ``dt``.
+
+    Parameters
+    ----------
+    db : HydroDB
+        Needs ``M`` (mass matrix) — a database without it cannot be integrated.
+    memory : RadiationMemory
+        IRFs (and the state-space fit for ``method="state_space"``).
+    dt : float
+        Integration step [s]; K is resampled every Δt/2 for the stage-consistent convolution.
+    method : {"convolution", "state_space"}
+    memory_length : float, optional
+        T_K [s] of the convolution; default the IRF's own length.
+    """
+    if db.M is None:
+        raise ValueError("the database has no mass matrix: give mass, centre of gravity and inertia")
+    Mt = db.M + memory.irf.A_inf
+    Mt = 0.5 * (Mt + Mt.T)  # A∞ is symmetric in theory; BEM round-off leaves ~1e-5 relative asymmetry
+    pairs = [(i, j) for i in range(6) for j in range(6) if memory.irf.significant[i, j]]
+    T_K = float(memory.irf.t[-1]) if memory_length is None else float(memory_length)
+    empty_i = np.zeros(0, dtype=np.int64)
+    if method == "convolution":
+        Kh = _resample_irf(memory, pairs, dt / 2, T_K)
+        pi = np.array([p[0] for p in pairs], dtype=np.int64)
+        pj = np.array([p[1] for p in pairs], dtype=np.int64)
+        return MotionArrays(np.linalg.inv(Mt), db.C.copy(), True, Kh, pi, pj, int(round(T_K / dt)),
+                            *_no_state_space())
+    if method != "state_space":
+        raise ValueError(f"method must be 'convolution' or 'state_space', got {method!r}")
+    ss = memory.state_space
+    if ss is None:
+        raise ValueError("no state-space fit in this radiation memory")
+    blocks = [(i, j, f) for (i, j), f in sorted(ss.pairs.items()) if f.order > 0]
+    _check_rk4_stable(blocks, dt)
+    n = sum(f.order for _, _, f in blocks)
+    A = np.zeros((n, n)); B = np.zeros(n); Cr = np.zeros(n)
+    s_in = np.zeros(n, dtype=np.int64); s_out = np.zeros(n, dtype=np.int64)
+    k = 0
+    for i, j, f in blocks:
+        o = f.order
+        A[k:k + o, k:k + o], B[k:k + o], Cr[k:k + o] = f.A, f.B, f.C
+        s_in[k:k + o], s_out[k:k + o] = j, i
+        k += o
+    # modal form: every state couples to itself and at most one partner (2×2 block of a complex pair)
+    A2 = np.zeros((n, 2))
+    pair = np.full(n, -1, dtype=np.int64)
+    for s_ in range(n):
+        A2[s_, 0] = A[s_, s_]
+        others = [q for q in np.flatnonzero(A[s_]) if q != s_]
+        if len(others) > 1:
+            raise ValueError("state-space blocks larger than 2×2: not a modal realisation")
+        if others:
+            pair[s_], A2[s_, 1] = others[0], A[s_, others[0]]
+    ss_A, ss_B, ss_C, ss_seg, rows = modal_layout(A2, B, Cr, s_in, s_out, pair)
+    return MotionArrays(np.linalg.inv(Mt), db.C.copy(), False, np.zeros((0, 1)), empty_i, empty_i, 0,
+                        ss_A, ss_B, ss_C, ss_seg, rows)
+
+
+def modal_layout(A2, B, C, s_in, s_out, pair):
+    r"""The kernel's layout of a modal state-space memory (:func:`boatland.integrate.cummins._state_space`).
+
+    The states of the fitted systems :math:`\dot z_s = a_s z_s + a'_s z_{q(s)} + b_s \dot x_{j(s)}`,
+    :math:`\mu_i = \sum_{s: i(s) = i} c_s z_s` (``pair`` q(s) = −1: a real pole) keep their order,
+    grouped by output DOF, between one zero guard state at each end (length N = n + 2). A complex pair's
+    partner must be its neighbour, so the kernel reads it as the state above or below (``ss_A`` rows 1,
+    2; the other row 0) in contiguous, vectorisable loops without an index array.
+
+    The arithmetic of every state and every output sum is unchanged (same operations in the same
+    order): a zero coefficient adds an exact zero and the guards stay zero.
+
+    Returns
+    -------
+    ss_A : (3, N)
+        Coefficient of the state itself, of the state above, of the state below (rows: each contiguous).
+    ss_B, ss_C : (N,)
+        Input and output coefficients.
+    ss_seg : (n_seg, 3) int64
+        Runs ``[start, end)`` of states sharing an input DOF (third column), covering every state once.
+    rows : (6, 2) int64
+        First state and number of states of each output DOF.
+    """
+    n = B.shape[0]
+    if np.any(np.diff(s_out) < 0):
+        raise ValueError("state-space states must be grouped by output DOF (blocks sorted by pair)")
+    N = n + 2
+    ss_A, ss_B, ss_C = np.zeros((3, N)), np.zeros(N), np.zeros(N)
+    ss_A[0, 1:-1], ss_B[1:-1], ss_C[1:-1] = A2[:, 0], B, C
+    for s_ in range(n):
+        q = pair[s_]
+        if q < 0:
+            continue
+        if s_out[q] != s_out[s_] or abs(q - s_) != 1:
+            raise ValueError("a complex pole's partner state must be its neighbour in the same pair's block")
+        ss_A[1 if q > s_ else 2, 1 + s_] = A2[s_, 1]
+    counts = np.bincount(s_out, minlength=6)
+    rows = np.stack([1 + np.concatenate([[0], np.cumsum(counts)[:-1]]), counts], axis=1).astype(np.int64)
+    seg = []
+    s_ = 0
+    while s_ < n:
+        e = s_ + 1
+        while e < n and s_in[e] == s_in[s_] and s_out[e] == s_out[s_]:
+            e += 1
+        seg.append((1 + s_, 1 + e, s_in[s_]))
+        s_ = e
+    return ss_A, ss_B, ss_C, np.array(seg, dtype=np.int64).reshape(-1, 3), rows
+
+
+def _no_state_space():
+    """:func:`modal_layout` of no states: the state-space fields of a kernel without that memory."""
+    e = np.zeros(0, dtype=np.int64)
+    return modal_layout(np.zeros((0, 2)), np.zeros(0), np.zeros(0), e, e, e)

@@ -1,0 +1,77 @@
+"""Incident definitions (boatland.trial.incidents): names are the store keys and parse back; each one is
+found in a hand-made trial where its time is known, after the settling and within an access."""
+
+import math
+
+import numpy as np
+import pytest
+
+from boatland.contact.fender import OFF, OPEN, SLIP, STICK
+from boatland.scenario.parts import Incidents
+from boatland.trial.incidents import (ContactLoss, FirstSlip, RollAbove, SlidOff, SlipDistance, campaign_incidents,
+                                      parse_incident, trial_incidents)
+from boatland.trial.result import Result
+
+
+def trial(mode, z, roll_deg=None, settled_at=2.0):
+    """A one-contact trial at t = 0, 1, 2, …: its modes, the fender point's height on the tube, its roll."""
+    mode = np.asarray(mode, dtype=np.int64)[:, None]
+    n = mode.shape[0]
+    tpos = np.zeros((n, 1, 2))
+    tpos[:, 0, 0] = z
+    x = np.zeros((n, 6))
+    if roll_deg is not None:
+        x[:, 3] = np.radians(roll_deg)
+    zeros = np.zeros((n, 1))
+    return Result(t=np.arange(float(n)), x=x, v=np.zeros((n, 6)), F_exc=np.zeros((n, 6)), thrust=np.zeros(n),
+                  mode=mode, fn=zeros, ft=np.zeros((n, 1, 2)), needed=zeros, available=zeros, tpos=tpos,
+                  provenance={"waves_from": settled_at}, incidents=Incidents({"slip_distance": (0.1, 0.3),
+                                                                              "roll_limit_deg": (5.0,)}))
+
+
+def test_names_are_the_store_keys_and_parse_back():
+    for d in (FirstSlip(), SlipDistance(0.1), SlipDistance(0.25), RollAbove(5.0), ContactLoss(), SlidOff()):
+        assert parse_incident(d.name) == d
+    assert SlipDistance(0.1).name == "slip > 0.1 m" and RollAbove(10.0).name == "roll > 10°"
+    assert ContactLoss().name == "contact loss" and SlidOff().name == "slid off the landing"
+    for bad in ("slip > x m", "slip > 0.1", "falls over"):
+        with pytest.raises(ValueError, match="not the name of an incident"):
+            parse_incident(bad)
+
+
+def test_a_trial_and_a_campaign_count_these_definitions():
+    inc = Incidents({"slip_distance": (0.1, 0.3), "roll_limit_deg": (5.0, 10.0)})
+    assert [d.name for d in trial_incidents(inc)] == ["slip > 0.1 m", "slip > 0.3 m", "roll > 5°", "roll > 10°",
+                                                      "contact loss", "slid off the landing"]
+    assert [d.name for d in trial_incidents(inc, contacts=False)][-1] == "roll > 10°"
+    assert [d.name for d in campaign_incidents(inc)] == ["first slip", "slip > 0.1 m", "slip > 0.3 m", "roll > 5°",
+                                                         "roll > 10°", "contact loss"]
+    assert [d.name for d in trial_incidents(None)] == ["slip > 0.1 m", "contact loss", "slid off the landing"]
+
+
+def test_each_definition_is_found_where_it_happens():
+    """Lands at t = 2 (after the settling), slides 0.15 m from t = 4 to 6, sticks, slides 0.2 m more from
+    t = 8, loses contact at t = 11; rolls past 5° at t = 9."""
+    mode = [0, 1, 1, 1, SLIP, SLIP, STICK, STICK, SLIP, SLIP, STICK, OPEN, OPEN]
+    z = [0, 0, 0, 0, -0.05, -0.15, -0.15, -0.15, -0.25, -0.35, -0.35, -0.35, -0.35]
+    roll = [0, 0, 0, 0, 1, 2, 3, 4, 4.5, 6, 4, 2, 0]
+    r = trial(mode, z, roll)
+    assert r.incident_times() == {"slip > 0.1 m": 5.0, "slip > 0.3 m": 9.0, "roll > 5°": 9.0, "contact loss": 11.0,
+                                  "slid off the landing": None}
+    assert FirstSlip().first_time(r) == 4.0
+    # within an access from t = 6: the second slide's onset, its exceedances, the contact lost
+    assert FirstSlip().in_access(r, 6.0) == 8.0
+    assert SlipDistance(0.1).in_access(r, 6.0) == 6.0 and SlipDistance(0.3).in_access(r, 6.0) == 9.0
+    assert RollAbove(5.0).in_access(r, 10.0) is None and ContactLoss().in_access(r, 6.0) == 11.0
+
+
+def test_sliding_off_is_contact_loss_and_its_own_incident():
+    r = trial([0, 1, 1, SLIP, SLIP, OFF], [0, 0, 0, -0.2, -0.6, -0.9])
+    assert r.incident_times()["slid off the landing"] == 5.0 and r.incident_times()["contact loss"] == 5.0
+    assert SlidOff().in_access(r, 10.0) == 10.0 and ContactLoss().in_access(r, 10.0) == 10.0   # ended before
+
+
+def test_slips_while_settling_are_not_incidents():
+    r = trial([0, SLIP, SLIP, 1, 1, 1], [0, 0.2, 0.5, 0.5, 0.5, 0.5], settled_at=3.0)
+    assert FirstSlip().first_time(r) is None and r.incident_times()["slip > 0.1 m"] is None
+    assert np.all(r.worst_offset == 0.0)                           # landed at t = 3 where it stuck
