@@ -113,7 +113,7 @@ def simulate(scenario=None, *, changes: Mapping[str, Any] | None = None, log: st
     from boatland.trial.simulate import simulate as run
 
     sc = load_scenario(scenario, changes=changes, **overrides)
-    db, _ = check_loaded(sc)
+    db, found = check_loaded(sc)
     sinks = []
     if log is not None:
         from boatland.record.mcap_log import McapLog
@@ -122,7 +122,7 @@ def simulate(scenario=None, *, changes: Mapping[str, Any] | None = None, log: st
     try:
         with warnings.catch_warnings():   # numba compiling the sinks' gate (object mode by design): not for users
             warnings.filterwarnings("ignore", message="Code running in object mode won't allow parallel execution")
-            return run(sc, db, sinks=sinks, progress=progress)
+            return run(sc, db, sinks=sinks, progress=progress, setup=found.setup)
     finally:
         for s in sinks:
             s.close()

@@ -38,8 +38,9 @@ def check(scenario, db, *, memory=False, setup: Setup | None = None) -> Scenario
     Returns
     -------
     ScenarioCheck
-        ``problems`` (the scenario cannot run), ``warnings``, ``notes`` (what was derived);
-        :meth:`ScenarioCheck.raise_if_problems` raises them as one :class:`~boatland.tomlspec.SpecError`.
+        ``problems`` (the scenario cannot run), ``warnings``, ``notes`` (what was derived) and the
+        ``setup`` it checked (a run starts from it); :meth:`ScenarioCheck.raise_if_problems` raises the
+        problems as one :class:`~boatland.tomlspec.SpecError`.
     """
     setup = landing_setup(scenario, db) if setup is None else setup
     found = check_against(setup)
@@ -49,4 +50,4 @@ def check(scenario, db, *, memory=False, setup: Setup | None = None) -> Scenario
         mem = setup.memory() if memory is True else memory() if callable(memory) else memory
         mc = check_memory(setup, mem)
         problems, warnings, notes = problems + mc.problems, warnings + mc.warnings, notes + mc.notes
-    return ScenarioCheck(problems=problems, warnings=warnings, notes=notes)
+    return ScenarioCheck(problems=problems, warnings=warnings, notes=notes, setup=setup)

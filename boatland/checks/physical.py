@@ -20,7 +20,7 @@ frequency step resolves (π/Δω), no A∞ or no hull mesh.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -53,11 +53,15 @@ class ScenarioCheck:
         ``(key_path, message)``: it can, but probably not as meant.
     notes : tuple of str
         What was derived (time step, contact period, start pose) for the user to see.
+    setup : Setup or None
+        The scenario on its vessel the checks looked at (:func:`boatland.checks.check`): a run can start
+        from it instead of deriving it again.
     """
 
     problems: tuple[tuple[str, str], ...]
     warnings: tuple[tuple[str, str], ...]
     notes: tuple[str, ...]
+    setup: Setup | None = field(default=None, compare=False, repr=False)
 
     @property
     def ok(self) -> bool:

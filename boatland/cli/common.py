@@ -61,7 +61,8 @@ def load_guarded(path, outputs, extra_inputs=(), changes=None, flags=None):
     check (:func:`boatland.checks.files.check_loaded`). Warnings are returned, not printed.
 
     ``outputs`` is a list of :class:`boatland.cli.guard.Output` or a callable ``outputs(scenario)``.
-    Returns (scenario, db, warnings).
+    Returns (scenario, db, warnings, setup): ``setup`` the :class:`boatland.landing.setup.Setup` the checks
+    looked at.
     """
     import warnings
 
@@ -74,8 +75,8 @@ def load_guarded(path, outputs, extra_inputs=(), changes=None, flags=None):
         scenario = with_overrides(scenario, changes or {}, flags or {})
         outs = outputs(scenario) if callable(outputs) else outputs
         check_outputs(outs, [*scenario_inputs(scenario), *extra_inputs])
-        db, _ = check_loaded(scenario)
-    return scenario, db, [str(w.message) for w in caught]
+        db, found = check_loaded(scenario)
+    return scenario, db, [str(w.message) for w in caught], found.setup
 
 
 def available_memory() -> int:
@@ -144,7 +145,7 @@ def screening_options(cmd) -> None:
 
 def freq_load(path, outputs=()):
     """Scenario and database for the frequency-domain commands, ``outputs`` guarded (warnings printed)."""
-    scenario, db, warns = load_guarded(path, outputs)
+    scenario, db, warns, _ = load_guarded(path, outputs)
     for w in warns:
         print(f"warning: {w}", file=sys.stderr)
     return scenario, db

@@ -60,7 +60,6 @@ def add_parser(sub) -> None:
 
 def cmd(args) -> int:
     from boatland.cli.common import check_fits_in_memory, compile_notice, load_guarded
-    from boatland.landing.setup import landing_setup
     from boatland.trial.simulate import BlowUpError, simulate
 
     path = args.scenario
@@ -70,9 +69,8 @@ def cmd(args) -> int:
         parse_target(args.rerun, bind=args.bind, port=args.port)       # a bad spec fails first
     changes = {k: v for k, v in (("simulation.duration", args.duration), ("simulation.seed", args.seed))
                if v is not None}
-    scenario, db, warns = load_guarded(path, lambda sc: _outputs(args, sc), changes=changes,
+    scenario, db, warns, setup = load_guarded(path, lambda sc: _outputs(args, sc), changes=changes,
                                        flags={"simulation.duration": "--duration", "simulation.seed": "--seed"})
-    setup = landing_setup(scenario, db)
     check_fits_in_memory(setup, flag="--duration" if args.duration is not None else f"{scenario.source}: "
                                                                                     "simulation.duration")
     sinks, log_path, live = _recording_sinks(args, scenario)
