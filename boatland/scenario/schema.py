@@ -75,6 +75,7 @@ def _spectrum_keys(part: bool) -> dict[str, Any]:
         "sigma_a": Key(float, gt=0.0, le=0.5, doc="JONSWAP width below the peak (default 0.07)"),
         "sigma_b": Key(float, gt=0.0, le=0.5, doc="JONSWAP width above the peak (default 0.09)"),
         "spreading": Key(float, gt=0.0, doc="cos-2s spreading exponent s (absent: long-crested)"),
+        "sigma_g": Key(float, gt=0.0, doc="width σ of a Gaussian swell [rad/s] (kind 'gaussian')"),
         "direction_deg": Key(float, doc="mean direction the waves travel towards, global frame [deg] "
                                         "(or relative_direction_deg)"),
         "relative_direction_deg": Key(float, doc="direction of travel relative to the vessel's x axis [deg]: "

@@ -9,6 +9,7 @@ kind        shape                density (:mod:`boatland.waves.spectra`)
 "jonswap"   :class:`Jonswap`     JONSWAP (Hasselmann et al. 1973) of Hs, Tp, γ (default 3.3), σ_a, σ_b,
                                  normalised so that 4√m₀ = Hs exactly
 "pm"        :class:`PiersonMoskowitz`  Pierson–Moskowitz: JONSWAP with γ = 1
+"gaussian"  :class:`GaussianSwell`  a narrow swell peak of width ``sigma_g`` [rad/s] (AQWA's ``GAUS``)
 "tma"       :class:`TMA`         JONSWAP × Kitaigorodskii's depth factor (Bouws et al. 1985): the site's
                                  finite depth removes energy, 4√m₀ < Hs
 ==========  ===================  =========================================================================
@@ -36,9 +37,11 @@ import numpy as np
 
 from boatland.errors import BoatlandWarning
 from boatland.tomlspec import SpecError
-from boatland.waves.spectra import SIGMA_A, SIGMA_B, bin_variance, spectrum_band, spreading_cos2s, tma
+from boatland.waves.spectra import (SIGMA_A, SIGMA_B, bin_variance, gaussian_band, gaussian_bin_variance,
+                                    gaussian_swell, spectrum_band, spreading_cos2s, tma)
 
-__all__ = ["GAMMA_DEFAULT", "GAMMA_LIMITS", "GAMMA_USUAL", "KINDS", "SHAPES", "Jonswap", "PiersonMoskowitz",
+__all__ = ["GAMMA_DEFAULT", "GAMMA_LIMITS", "GAMMA_USUAL", "KINDS", "SHAPES", "GaussianSwell", "Jonswap",
+           "PiersonMoskowitz",
            "SeaStateWarning", "SpectralShape", "SpectrumPart", "TMA", "finite_problem", "is_number",
            "positive_problem", "sea_warning", "spectrum_part_problems"]
 
@@ -135,6 +138,11 @@ class Jonswap(SpectralShape):
 
     kind, label = "jonswap", "JONSWAP"
 
+    def problems(self, v, key):
+        if v.get("sigma_g") is not None:
+            return [(key("sigma_g"), f"is the width of a Gaussian swell (kind = 'gaussian'), not of a {self.label} part")]
+        return []
+
 
 class PiersonMoskowitz(Jonswap):
     """Pierson–Moskowitz: JONSWAP with γ = 1 (:func:`boatland.waves.spectra.pierson_moskowitz`)."""
@@ -145,11 +153,12 @@ class PiersonMoskowitz(Jonswap):
         return 1.0
 
     def problems(self, v, key):
+        out = super().problems(v, key)
         gamma = v.get("gamma")
         if gamma is not None and is_number(gamma) and GAMMA_LIMITS[0] <= gamma <= GAMMA_LIMITS[1] and gamma != 1.0:
-            return [(key("gamma"), f"a Pierson–Moskowitz part has γ = 1; got {gamma:g} "
-                                   "(use kind = 'jonswap' for a peaked spectrum)")]
-        return []
+            out.append((key("gamma"), f"a Pierson–Moskowitz part has γ = 1; got {gamma:g} "
+                                      "(use kind = 'jonswap' for a peaked spectrum)"))
+        return out
 
 
 class TMA(Jonswap):
@@ -159,8 +168,35 @@ class TMA(Jonswap):
     finite_depth = True
 
 
+class GaussianSwell(SpectralShape):
+    """A swell: a Gaussian peak of width ``sigma_g`` [rad/s] at ω_p (:func:`boatland.waves.spectra.gaussian_swell`),
+    4√m₀ = Hs exactly; deep water."""
+
+    kind, label = "gaussian", "Gaussian swell"
+
+    def problems(self, v, key):
+        s = v.get("sigma_g")
+        if s is None:
+            return [(key("sigma_g"), "missing: a Gaussian swell needs its width σ [rad/s] (e.g. 0.05)")]
+        if not is_number(s) or not 0 < s < math.pi / v.get("Tp", math.inf):
+            return [(key("sigma_g"), f"must be > 0 and below ω_p/2 (a swell is narrow), got {s!r}")]
+        return []
+
+    def density(self, part, omega, water_depth=math.inf, g=9.81):
+        return gaussian_swell(omega, part.Hs, part.Tp, part.sigma_g)
+
+    def bin_variance(self, part, edges, water_depth=math.inf, g=9.81):
+        return gaussian_bin_variance(edges, part.Hs, part.Tp, part.sigma_g)
+
+    def band(self, part, tail):
+        return gaussian_band(part.Tp, part.sigma_g, tail)
+
+    def m0(self, part, water_depth=math.inf, g=9.81):
+        return part.Hs ** 2 / 16.0
+
+
 #: The shapes a part can have, by ``kind``.
-SHAPES: dict[str, SpectralShape] = {s.kind: s for s in (Jonswap(), PiersonMoskowitz(), TMA())}
+SHAPES: dict[str, SpectralShape] = {s.kind: s for s in (Jonswap(), PiersonMoskowitz(), TMA(), GaussianSwell())}
 #: Their kinds.
 KINDS = tuple(SHAPES)
 
@@ -227,6 +263,8 @@ class SpectrumPart:
         Mean direction the waves travel towards, global frame [deg].
     spreading : float or None
         cos-2s spreading exponent s > 0 (short-crested), or None for long-crested waves (default).
+    sigma_g : float or None
+        Width σ of a Gaussian swell [rad/s] (``"gaussian"`` only).
     """
 
     Hs: float
@@ -237,6 +275,7 @@ class SpectrumPart:
     sigma_b: float = SIGMA_B
     direction_deg: float = 0.0
     spreading: float | None = None
+    sigma_g: float | None = None
 
     def __post_init__(self):
         values = {f.name: getattr(self, f.name) for f in fields(self)}
@@ -249,8 +288,9 @@ class SpectrumPart:
         for name, value in (("Hs", self.Hs), ("Tp", self.Tp), ("gamma", gamma), ("sigma_a", self.sigma_a),
                             ("sigma_b", self.sigma_b), ("direction_deg", self.direction_deg)):
             object.__setattr__(self, name, float(value))
-        if self.spreading is not None:
-            object.__setattr__(self, "spreading", float(self.spreading))
+        for name in ("spreading", "sigma_g"):
+            if getattr(self, name) is not None:
+                object.__setattr__(self, name, float(getattr(self, name)))
 
     @property
     def shape(self) -> SpectralShape:

@@ -59,7 +59,8 @@ from scipy import special
 from boatland.waves.dispersion import tma_depth_factor
 
 __all__ = [
-    "SIGMA_A", "SIGMA_B", "jonswap_normalisation", "jonswap", "pierson_moskowitz", "tma",
+    "SIGMA_A", "SIGMA_B", "jonswap_normalisation", "jonswap", "pierson_moskowitz", "tma", "gaussian_swell",
+    "gaussian_band", "gaussian_bin_variance",
     "spectrum_band", "bin_variance", "spreading_cos2s", "spreading_constant", "spreading_quantile",
 ]
 
@@ -143,6 +144,38 @@ def tma(omega, Hs: float, Tp: float, gamma: float = 3.3, sigma_a: float = SIGMA_
     (φ ≤ 1). Tends to JONSWAP as kh → ∞ (``h = inf`` returns it exactly).
     """
     return jonswap(omega, Hs, Tp, gamma, sigma_a, sigma_b) * tma_depth_factor(omega, h, g)
+
+
+def gaussian_swell(omega, Hs: float, Tp: float, sigma: float) -> np.ndarray:
+    r"""Gaussian swell spectrum [m² s/rad]: a narrow peak of width σ [rad/s] at ω_p = 2π/Tp,
+
+    .. math:: S(\omega) = \frac{H_s^2}{16}\,\frac{1}{\Phi(\omega_p/\sigma)\,\sigma\sqrt{2\pi}}
+              \exp\left[-\frac{(\omega - \omega_p)^2}{2\sigma^2}\right], \qquad \omega \ge 0,
+
+    normalised on ω ≥ 0 (Φ the standard normal distribution) so that :math:`4\sqrt{m_0} = H_s` exactly.
+    The swell of a two-system sea (with a JONSWAP or Pierson–Moskowitz wind sea); the form of AQWA's
+    ``GAUS`` record (σ in rad/s) and of Bunney et al. (2014), *Proc. 3rd IAHR Europe Congress*.
+    """
+    w = np.asarray(omega, dtype=float)
+    wp = 2.0 * math.pi / Tp
+    scale = Hs * Hs / 16.0 / (special.ndtr(wp / sigma) * sigma * math.sqrt(2.0 * math.pi))
+    return np.where(w >= 0, scale * np.exp(-0.5 * ((w - wp) / sigma) ** 2), 0.0)
+
+
+def gaussian_band(Tp: float, sigma: float, tail: float = 0.002) -> tuple[float, float]:
+    """[ω_lo, ω_hi] of :func:`gaussian_swell` leaving ``tail``/2 of m0 out at each end (ω_lo ≥ 0)."""
+    wp = 2.0 * math.pi / Tp
+    z = float(special.ndtri(1.0 - 0.5 * tail))
+    return max(wp - z * sigma, 1e-3 * wp), wp + z * sigma
+
+
+def gaussian_bin_variance(edges, Hs: float, Tp: float, sigma: float) -> np.ndarray:
+    r"""Variance of each frequency bin of :func:`gaussian_swell`, exactly:
+    :math:`\frac{H_s^2}{16}\,[\Phi(u_{j+1}) - \Phi(u_j)]/\Phi(\omega_p/\sigma)`, :math:`u = (\omega - \omega_p)/\sigma`."""
+    e = np.maximum(np.asarray(edges, dtype=float), 0.0)
+    wp = 2.0 * math.pi / Tp
+    cdf = special.ndtr((e - wp) / sigma)
+    return Hs * Hs / 16.0 * np.diff(cdf) / special.ndtr(wp / sigma)
 
 
 def spectrum_band(Tp: float, gamma: float = 3.3, tail: float = 0.002) -> tuple[float, float]:

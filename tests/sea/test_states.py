@@ -37,7 +37,7 @@ def no_warnings(fn):
     (dict(Hs=1.0, Tp=8.0, kind="pm", gamma=3.3), r"gamma: a Pierson–Moskowitz part has γ = 1"),
     (dict(Hs=1.0, Tp=8.0, spreading=0.0), r"spreading: must be > 0 .* got 0"),
     (dict(Hs=1.0, Tp=8.0, spreading=-2.0), r"spreading: must be > 0"),
-    (dict(Hs=1.0, Tp=8.0, kind="jonswp"), r"kind: must be one of 'jonswap', 'pm', 'tma', got 'jonswp' \(did you mean 'jonswap'\?\)"),
+    (dict(Hs=1.0, Tp=8.0, kind="jonswp"), r"kind: must be one of 'jonswap', 'pm', 'tma', 'gaussian', got 'jonswp' \(did you mean 'jonswap'\?\)"),
     (dict(Hs=1.0, Tp=8.0, sigma_a=0.0), r"sigma_a: must be in \(0, 0.5\]"),
     (dict(Hs="1", Tp=8.0), r"Hs: must be > 0 m .* got '1'"),
 ])
