@@ -277,6 +277,8 @@ SCENARIO_SCHEMA = Table({
                                 doc="slip distance thresholds [m] (one or several)"),
         "roll_limit_deg": Vector(min_size=1, scalar=True, gt=0.0, lt=90.0, default=ROLL_LIMIT_DEFAULT,
                                  doc="roll angle limits [deg] (one or several)"),
+        "contact_loss_duration": Vector(min_size=1, scalar=True, gt=0.0,
+                                        doc="a contact lost for longer than this [s] (one or several; absent: none)"),
     }, doc="incident definitions reported by a trial"),
     "output": Table({
         "file": Key(str, doc="time series file to write (HDF5), relative to the working directory"),

@@ -18,6 +18,9 @@ definition                 scenario / campaign ``[incidents]``  counts
                                                                 landed (Grøtting 2015 §3.3: 10 cm)
 :class:`RollAbove`         ``roll_limit_deg = [10.0, …]``       roll beyond the limit (Grøtting 2015 §4.1.2)
 :class:`ContactLoss`       (always, with a fender)              a contact opens, or slides off the landing
+:class:`ContactLossLonger` ``contact_loss_duration = [0.5, …]``  a contact open (or off the landing) for
+                           [s]                                  longer than the duration: a bounce, not a
+                                                                graze
 :class:`SlidOff`           (always, with a fender)              the fender slides off the end of a tube
 =========================  ===================================  =============================================
 
@@ -42,7 +45,8 @@ import numpy as np
 from boatland.contact.fender import OFF, OPEN
 from boatland.trial.events import SLID_OFF, first_entry, first_exceedance
 
-__all__ = ["FROM_KEY", "ContactLoss", "FirstSlip", "Incident", "RollAbove", "SlidOff", "SlipDistance",
+__all__ = ["FROM_KEY", "ContactLoss", "ContactLossLonger", "FirstSlip", "Incident", "RollAbove", "SlidOff",
+           "SlipDistance",
            "campaign_incidents", "parse_incident", "trial_incidents"]
 
 
@@ -164,13 +168,44 @@ class SlidOff(Incident):
         return None if t is None else max(t, t_access)
 
 
+@dataclass(frozen=True)
+class ContactLossLonger(Incident):
+    """A contact open, or off the landing, for longer than ``duration`` [s] at a stretch after the settling:
+    the fender bounced off the landing. The incident's time is when the stretch passes the duration."""
+
+    duration: float
+    key: ClassVar[str] = "contact_loss_duration"
+    template: ClassVar[str] = "contact loss > {:g} s"
+
+    def _times(self, r) -> list[float]:
+        """Each stretch's time past the duration, every contact, from the settling on (sorted)."""
+        t, out = r.t, []
+        for c in range(r.mode.shape[1]):
+            lost = np.isin(r.mode[r.settle_row:, c], (OPEN, OFF))
+            edges = np.diff(np.concatenate([[False], lost, [False]]).astype(np.int8))
+            for a, b in zip(np.flatnonzero(edges == 1), np.flatnonzero(edges == -1)):
+                k0 = r.settle_row + a
+                k = int(np.searchsorted(t, t[k0] + self.duration, side="right"))
+                if k < r.settle_row + b:        # still lost at that step (or beyond the record: not yet)
+                    out.append(float(t[k]))
+        return sorted(out)
+
+    def first_time(self, r) -> float | None:
+        times = self._times(r)
+        return times[0] if times else None
+
+    def in_access(self, r, t_access: float) -> float | None:
+        times = [x for x in self._times(r) if x >= t_access - 1e-9]
+        return times[0] if times else None
+
+
 def _entry(r, mode: int, k_start: int) -> float | None:
     k = first_entry(r.mode, mode, k_start)
     return None if k < 0 else float(r.t[k])
 
 
 #: ``[incidents]`` key → the definition its values make (one per value).
-FROM_KEY = {cls.key: cls for cls in (SlipDistance, RollAbove)}
+FROM_KEY = {cls.key: cls for cls in (SlipDistance, RollAbove, ContactLossLonger)}
 
 #: Names of the definitions without a parameter.
 _FIXED = {d.name: d for d in (FirstSlip(), ContactLoss(), SlidOff())}

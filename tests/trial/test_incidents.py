@@ -8,8 +8,8 @@ import pytest
 
 from boatland.contact.fender import OFF, OPEN, SLIP, STICK
 from boatland.scenario.parts import Incidents
-from boatland.trial.incidents import (ContactLoss, FirstSlip, RollAbove, SlidOff, SlipDistance, campaign_incidents,
-                                      parse_incident, trial_incidents)
+from boatland.trial.incidents import (ContactLoss, ContactLossLonger, FirstSlip, RollAbove, SlidOff, SlipDistance,
+                                      campaign_incidents, parse_incident, trial_incidents)
 from boatland.trial.result import Result
 
 
@@ -75,3 +75,37 @@ def test_slips_while_settling_are_not_incidents():
     r = trial([0, SLIP, SLIP, 1, 1, 1], [0, 0.2, 0.5, 0.5, 0.5, 0.5], settled_at=3.0)
     assert FirstSlip().first_time(r) is None and r.incident_times()["slip > 0.1 m"] is None
     assert np.all(r.worst_offset == 0.0)                           # landed at t = 3 where it stuck
+
+
+def test_a_contact_lost_longer_than_a_duration():
+    """Open at t = 5 for one second (a graze), then from t = 8 to 11 (a bounce): with a 1.5-s definition
+    only the bounce counts, at the first step past 8 + 1.5 s; an access from t = 11 sees none."""
+    mode = [0, 1, 1, 1, 1, OPEN, 1, 1, OPEN, OPEN, OPEN, 1, 1, 1]
+    r = trial(mode, np.zeros(len(mode)))
+    d = ContactLossLonger(1.5)
+    assert d.name == "contact loss > 1.5 s" and parse_incident(d.name) == d
+    assert d.first_time(r) == 10.0 and ContactLoss().first_time(r) == 5.0
+    assert d.in_access(r, 9.0) == 10.0 and d.in_access(r, 11.0) is None
+    assert ContactLossLonger(3.0).first_time(r) is None                   # 3 s at most: not longer
+    inc = Incidents({"slip_distance": (0.1,), "contact_loss_duration": (1.5,)})
+    assert "contact loss > 1.5 s" in [x.name for x in campaign_incidents(inc)]
+
+
+def test_a_new_definition_reaches_the_trial_and_the_campaign_from_the_files(tmp_path):
+    """``[incidents] contact_loss_duration`` in a scenario (or a campaign file) is all a user writes."""
+    import boatland
+    from boatland.campaign.plan import load_campaign
+    from boatland.campaign.runner import incident_names
+    from boatland.checks.files import load
+
+    r = boatland.simulate("ctv_landing", **{"incidents.contact_loss_duration": [0.5], "simulation.duration": 40.0})
+    assert "contact loss > 0.5 s" in r.incident_times() and "contact loss > 0.5 s" in r.report()["incidents"]
+    camp = tmp_path / "c.toml"
+    camp.write_text(f'''name = "c"
+scenario = "{boatland.api.scenario_path("ctv_landing")}"
+seeds = 1
+[incidents]
+contact_loss_duration = [0.5, 2.0]
+''')
+    names = incident_names(load_campaign(camp, load_scenario=load))
+    assert names[-2:] == ["contact loss > 2 s", "contact loss"] and "contact loss > 0.5 s" in names
