@@ -129,10 +129,9 @@ def landed_response(db: HydroDB, setup: LandingSetup, omega, beta_deg, method: s
     if method == "wu":
         return hinged_rao(db, omega, setup.points, beta_deg=beta_deg, normal=setup.normals,
                           additional_damping=setup.additional_damping)
-    shear = None if not math.isfinite(setup.shear_stiffness) else setup.shear_stiffness
     return hinged_rao(setup.near_pile(db, beta_deg), omega, setup.points, beta_deg=beta_deg, normal=setup.normals,
-                      stiffness=setup.stiffness, damping=setup.damping, shear_stiffness=shear,
-                      shear_damping=setup.shear_damping if shear is not None else None, sideways=setup.sideways,
+                      stiffness=setup.stiffness, damping=setup.damping, shear_stiffness=setup.shear_stiffness,
+                      shear_damping=setup.shear_damping, sideways=setup.sideways,
                       thrust=setup.thrust, thrust_position=setup.thrust_position,
                       additional_damping=setup.additional_damping,
                       **_follows(normal_follows(setup.fender_width, np.broadcast_to(setup.tube_radius, (setup.n_points,)),

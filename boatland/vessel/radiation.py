@@ -1,6 +1,6 @@
 """Radiation memory of a vessel: the IRFs and the state-space fit made from its :class:`HydroDB`.
 
-This is the bridge from the database (model layer) to the kernels of :mod:`boatland.irf`: it passes
+This is the bridge from the database to the kernels of :mod:`boatland.irf`: it passes
 the database's arrays, its A∞ (when the solver gave one) and its length scale ∇^⅓, and bundles the
 result. Storage in the database file is in :mod:`boatland.hydro.bemio`.
 """

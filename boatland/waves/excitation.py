@@ -30,13 +30,13 @@ Directions
     itself — and a component outside gets **NaN**, never a value interpolated across the part of
     the circle the table does not cover. A half-circle table of a port–starboard symmetric hull
     is completed to the circle before it gets here
-    (:func:`boatland.vessel.directions.full_circle_excitation`), and the model layer refuses
+    (:func:`boatland.vessel.directions.full_circle_excitation`), and the sea (:mod:`boatland.sea.states`) refuses
     directions outside any other table with a message first
     (:func:`boatland.vessel.directions.direction_problem`).
 Outside the frequency band
-    Above ω_max of the table the excitation is **zero** (and counted: ``n_above``; the model layer
+    Above ω_max of the table the excitation is **zero** (and counted: ``n_above``; :mod:`boatland.sea.states`
     warns with the variance share). Below the first tabulated frequency X is held at its value
-    there (counted: ``n_below``); the model layer prepends the exact long-wave limit
+    there (counted: ``n_below``); :func:`boatland.sea.states.excitation_table` prepends the exact long-wave limit
     X(0, β) = ``C[:, 2]`` (the heave column of the restoring matrix: a wave much longer than the
     vessel is a slow rise of the water level, in phase with the crest), so that with a database the
     low end is interpolated between ω = 0 and ω_min instead.
