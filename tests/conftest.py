@@ -22,6 +22,14 @@ def refdata() -> Path:
 
 
 @pytest.fixture(scope="session")
+def box_db():
+    """A synthetic box vessel (:func:`box_vessel.box_vessel_db`) for the scenario, checks and setup tests."""
+    from box_vessel import box_vessel_db
+
+    return box_vessel_db()
+
+
+@pytest.fixture(scope="session")
 def repo_root() -> Path:
     """The source checkout (scenario files live in its ``scenarios/``)."""
     return REPO

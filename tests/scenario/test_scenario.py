@@ -1,4 +1,5 @@
-"""Scenario files: the validated model, all problems at once with key paths, physical checks, JSON Schema."""
+"""Scenario files: the validated format, all problems at once with key paths, the JSON Schema. (Their checks
+against a database: tests/checks/test_physical.py; the scenario on its vessel: tests/landing/test_setup.py.)"""
 
 from __future__ import annotations
 
@@ -11,69 +12,22 @@ import numpy as np
 import pytest
 
 from boatland.errors import BoatlandInputError
-from boatland.vessel.database import HullMesh, HydroDB, rigid_body_mass_matrix
-from boatland.scenario.scenario import Scenario, ScenarioWarning, json_schema, load_scenario, scenario_from_dict
-from boatland.landing.contacts import contact_period
-from boatland.vessel.database import roll_critical_damping
+from boatland.scenario.scenario import ScenarioWarning, json_schema, load_scenario, scenario_from_dict
 from boatland.scenario.schema import MEMORY_DEFAULT
 from boatland.sea.states import RegularWave, SeaState
 from boatland.tomlspec import SpecError
-from boatland.checks.physical import check_against
-from boatland.landing.setup import additional_damping, landing_setup, time_step
+
+from box_vessel import BASE, make  # a CTV-like scenario document and its builder
+from boatland.landing.setup import time_step
 
 SCENARIOS = Path(__file__).resolve().parents[2] / "scenarios"
 SHIPPED = sorted(SCENARIOS.glob("*.toml"))
-
-# A CTV-like landing trial as a parsed document (what tomllib returns).
-BASE = {
-    "name": "t",
-    "simulation": {"duration": 100.0, "dt": 0.05, "seed": 3},
-    "vessel": {"database": "box"},
-    "landing": {"monopile_diameter": 6.5, "bearing_deg": 180.0, "strut_spacing": 1.5, "strut_diameter": 0.35,
-                "standoff": 1.2},
-    "fender": {"points": [[12.3, 0.75, 1.5], [12.3, -0.75, 1.5]], "stiffness": 1.0e6, "damping": 4.0e4,
-               "mu_s": 0.6, "mu_k": 0.5},
-    "thrust": {"force": 80e3, "position": [-10.5, 0.0, -0.9]},
-    "sea": {"kind": "jonswap", "Hs": 1.5, "Tp": 7.0, "relative_direction_deg": 180.0},
-}
-
-
-def make(changes=None, remove=(), **kw) -> Scenario:
-    doc = copy.deepcopy(BASE)
-    for path in remove:
-        sec, _, key = path.partition(".")
-        if key:
-            doc[sec].pop(key)
-        else:
-            doc.pop(sec)
-    for path, value in (changes or {}).items():
-        sec, _, key = path.partition(".")
-        if key:
-            doc.setdefault(sec, {})[key] = value
-        else:
-            doc[sec] = value
-    return scenario_from_dict(doc, source="t.toml", **kw)
 
 
 def problems_of(changes=None, remove=(), **kw) -> dict[str, str]:
     with pytest.raises(SpecError) as info:
         make(changes, remove, **kw)
     return dict(info.value.problems)
-
-
-@pytest.fixture(scope="module")
-def box_db() -> HydroDB:
-    """A synthetic 24 m × 9 m × 1.4 m, 90 t vessel (box hull mesh), enough for the geometric and dt checks."""
-    omega = np.arange(1, 51) * 0.1
-    nf = omega.size
-    A = np.broadcast_to(np.diag([5e3, 6e4, 8e4, 7e5, 1.5e6, 2.7e6])[:, :, None], (6, 6, nf)).copy()
-    B = np.broadcast_to(np.diag([1e3, 1e4, 1e5, 1e5, 1e6, 1e6])[:, :, None], (6, 6, nf)) * np.exp(-omega)
-    M = rigid_body_mass_matrix(9e4, (0.0, 0.0, 1.3), (1.1e6, 3.6e6, 3.6e6))
-    C = np.diag([0.0, 0.0, 1.3e6, 1.1e7, 1.5e8, 0.0])
-    v = np.array([[x, y, z] for x in (-12, 12) for y in (-4.5, 4.5) for z in (-1.4, 0.0)], float)
-    faces = np.array([[0, 1, 3, 2], [4, 6, 7, 5], [0, 4, 5, 1], [2, 3, 7, 6], [0, 2, 6, 4], [1, 5, 7, 3]])
-    return HydroDB(omega=omega, A=A, B=B, X=np.zeros((6, 2, nf), complex), wave_dir_deg=[0.0, 180.0], C=C,
-                   A_inf=A[:, :, -1], M=M, disp_vol=9e4 / 1025, name="box", mesh=HullMesh(v, faces))
 
 
 # ---------------------------------------------------------------------------------------- shipped files
@@ -353,75 +307,6 @@ def test_doubtful_values_warn():
     with pytest.warns(ScenarioWarning, match="outside the range 0.5–2"):
         s = make({"fender.delta": 3.0})
     assert any("fender.delta" in w for w in s.warnings)
-
-
-# ---------------------------------------------------------------------------------------- database checks
-def test_clean_against_a_matching_database(box_db):
-    check = check_against(landing_setup(make(), box_db))
-    assert check.ok, check.problems
-    assert any("fender contact" in n for n in check.notes)
-
-
-def test_contact_period_and_dt_rule(box_db):
-    s = make(remove=("simulation.dt",))
-    cp = contact_period(s, box_db)
-    m = box_db.M[0, 0] + box_db.A_inf[0, 0]
-    # two contacts in parallel along the surge axis, lightly damped: T ≈ 2π √(m / 2c)
-    assert cp.period == pytest.approx(2 * math.pi * math.sqrt(m / 2e6), rel=0.05)
-    assert cp.undamped[0] == pytest.approx(2 * math.pi * math.sqrt(cp.m_eff[0] / 1e6))
-    assert landing_setup(s, box_db).dt == 0.05
-    stiff = make({"fender.stiffness": 1e8}, remove=("simulation.dt",))
-    assert landing_setup(stiff, box_db).dt == pytest.approx(contact_period(stiff, box_db).period / 20)
-
-
-def test_dt_too_large_for_the_fender(box_db):
-    check = check_against(landing_setup(make({"fender.stiffness": 1e8}), box_db))
-    found = dict(check.problems)
-    assert "too large for the fender" in found["simulation.dt"]
-    with pytest.raises(SpecError, match="simulation.dt"):
-        check.raise_if_problems("t.toml")
-
-
-def test_fender_not_at_the_bow_or_outside_the_beam(box_db):
-    s = make({"fender.points": [[5.0, 0.75, 1.5], [5.0, -0.75, 1.5]]})
-    found = dict(check_against(landing_setup(s, box_db)).problems)
-    assert "not at the bow" in found["fender.points[0]"]
-    s = make({"fender.points": [[12.3, 5.0, 1.5], [12.3, 3.5, 1.5]], "landing.strut_spacing": 1.5})
-    problems = check_against(landing_setup(s, box_db)).problems
-    assert ("fender.points[0]", "y = 5 m is outside the hull's beam (y = -4.5 … 4.5 m)") in problems
-    s = make({"fender.points": [[16.0, 0.75, 1.5], [16.0, -0.75, 1.5]]})
-    assert "ahead of the stem" in dict(check_against(landing_setup(s, box_db)).problems)["fender.points[0]"]
-
-
-def test_hull_inside_the_monopile(box_db):
-    s = make({"vessel.position": [-10.0, 0.0]}, remove=("fender", "thrust"))
-    problems = check_against(landing_setup(s, box_db)).problems
-    assert ("vessel.position", "the hull reaches 3.25 m into the monopile at t = 0") in problems
-    assert any(k == "vessel.position" and "overlaps struts[0]" in m for k, m in problems)
-    assert check_against(landing_setup(make({"vessel.position": [-17.0, 0.0]}, remove=("fender", "thrust")), box_db)).ok
-
-
-def test_waves_above_the_database_band(box_db):
-    s = make({"sea": {"kind": "regular", "H": 0.2, "T": 1.0, "direction_deg": 180.0}, "simulation.dt": 0.01})
-    assert "above the database's highest frequency" in dict(check_against(landing_setup(s, box_db)).problems)["sea.T"]
-    with pytest.warns(ScenarioWarning, match="breaking limit"):
-        s = make({"sea.Tp": 2.0, "simulation.dt": 0.01})
-    warns = dict(check_against(landing_setup(s, box_db)).warnings)
-    assert "of the wave variance lies above" in warns["sea"]
-
-
-def test_memory_longer_than_the_database_resolves(box_db):
-    warns = dict(check_against(landing_setup(make({"radiation": {"memory": 60.0}}), box_db)).warnings)
-    assert "π/Δω = 31.4 s" in warns["radiation.memory"]
-
-
-def test_roll_damping_fraction_of_critical(box_db):
-    s = make({"vessel.damping": {"roll_critical_fraction": 0.05, "linear": [0, 0, 0, 1e4, 0, 0]}})
-    Bv, Bq = additional_damping(s, box_db)
-    crit = roll_critical_damping(box_db)
-    M44, A44, C44 = box_db.M[3, 3], box_db.A_inf[3, 3], box_db.C[3, 3]  # A is constant in this database
-    assert crit == pytest.approx(2 * math.sqrt((M44 + A44) * C44))
-    assert Bv[3, 3] == pytest.approx(1e4 + 0.05 * crit) and not Bq.any()
 
 
 # ---------------------------------------------------------------------------------------- JSON Schema
