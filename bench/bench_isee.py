@@ -25,7 +25,7 @@ from pathlib import Path
 
 import h5py
 import numpy as np
-from boatland.landing.setup import landing_setup
+from boatland.landing.setup import Setup
 
 REPO = Path(__file__).resolve().parents[1]
 BASE = REPO / "scenarios" / "ctv24_landing.toml"   # the figures' vessel (ctv24, 80 kN)
@@ -155,7 +155,7 @@ def _linear(hs, rel, access, directions, kappa=0.3, n=400, tp=7.0, gamma=3.3):
         sc = load(BASE).replace({"sea.Hs": hs, "sea.relative_direction_deg": rel, "sea.Tp": tp, "sea.gamma": gamma})
         sc = sc.replace({"simulation.duration": exposure_start(sc) + 30.0 + access})
         db = resolve_database(sc)
-        setup = landing_setup(sc, db)
+        setup = Setup.of(sc, db)
         dt, nst = setup.dt, setup.n_steps
         g = GaussianSea(sea=setup.waves, dt=dt, n_steps=nst)
         setup = LandingSetup.from_scenario(sc, db)

@@ -19,7 +19,7 @@ from pathlib import Path
 from boatland.record.mcap_log import McapLog
 from boatland.checks.files import default_scenario_path, load_checked
 from boatland.trial.simulate import simulate
-from boatland.landing.setup import landing_setup
+from boatland.landing.setup import Setup
 
 
 class Timed:
@@ -74,7 +74,7 @@ def main() -> None:
             sinks.append(Timed(RerunLog(f"save={tmp / 'run.rrd'}")))
         return sinks
 
-    n = landing_setup(scenario, db).n_steps
+    n = Setup.of(scenario, db).n_steps
     print(f"default trial, {args.duration:g} s simulated, {n} steps; {os.cpu_count()} CPUs; "
           f"load average before {os.getloadavg()[0]:.2f}")
     kinds = tuple(k.strip() for k in args.kinds.split(","))

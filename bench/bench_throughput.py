@@ -52,7 +52,7 @@ from pathlib import Path
 import numpy as np
 
 from _timing import cpu_name
-from boatland.landing.setup import landing_setup
+from boatland.landing.setup import Setup
 
 REPO = Path(__file__).resolve().parents[1]
 STUDY = REPO / "scenarios" / "campaigns" / "table414.toml"
@@ -77,10 +77,10 @@ def load():
 
 def kernel_inputs(scenario, db, arrays):
     """The kernel call of :func:`boatland.trial.simulate.simulate` for this scenario (same inputs)."""
-    from boatland.landing.setup import landing_setup
+    from boatland.landing.setup import Setup
     from boatland.trial.simulate import LIMIT_ROT, LIMIT_TRANS, thrust_series, wave_ramp
 
-    setup = landing_setup(scenario, db)
+    setup = Setup.of(scenario, db)
     dt, n = setup.dt, setup.n_steps
     x0, y0, psi = scenario.start_pose()
     F = setup.waves.excitation(db, seed=scenario.simulation.seed, dt=dt, n_steps=n, x0=x0, y0=y0,
@@ -274,7 +274,7 @@ def main() -> None:
             path = study_file(tmp, access, args.seeds)
             c = load_campaign(path, load_scenario=load()[0])
             db = load()[1](c.base)
-            steps = sum(landing_setup(c.scenario_for(s), db).n_steps for s in c.trials())
+            steps = sum(Setup.of(c.scenario_for(s), db).n_steps for s in c.trials())
             for workers in args.workers:
                 for row, (label, code) in enumerate([lc for _ in range(args.repeat) for lc in codes]):
                     load0 = load_text()

@@ -28,7 +28,7 @@ import numpy as np
 from pathlib import Path
 
 from boatland.checks.files import load_checked
-from boatland.landing.setup import landing_setup
+from boatland.landing.setup import Setup
 from boatland.trial.motion import compile_motion
 from boatland.trial.simulate import LIMIT_ROT, LIMIT_TRANS, simulate, thrust_series, wave_ramp
 
@@ -39,7 +39,7 @@ IRF_MEMORY = 40.0  # [s] ctv24's IRF has not decayed by 30 s (6 % left in yaw): 
 
 def trial_inputs(sc, db, memory):
     """Kernel arrays and keyword arguments of the scenario's trial, waves included (as ``simulate``)."""
-    setup = landing_setup(sc, db)
+    setup = Setup.of(sc, db)
     dt, n = setup.dt, setup.n_steps
     arr = compile_motion(db, memory, dt, method=sc.radiation.method, memory_length=sc.radiation.memory)
     x0, y0, psi = sc.start_pose()
@@ -62,7 +62,7 @@ def radiation(sc, db, method, memory):
     sc = sc.replace({"radiation.method": method, "radiation.memory": memory})
     key = (method, max(memory, IRF_MEMORY))
     if key not in _MEMORIES:
-        _MEMORIES[key] = landing_setup(sc.replace({"radiation.memory": key[1]}), db).memory()
+        _MEMORIES[key] = Setup.of(sc.replace({"radiation.memory": key[1]}), db).memory()
     return sc, _MEMORIES[key]
 
 
@@ -100,7 +100,7 @@ def main():
     scenario, db, _ = load_checked(CTV24_LANDING)
     T = scenario.simulation.duration
     print(f"# {platform.machine()}, Python {platform.python_version()}, numba {numba.__version__}, "
-          f"{scenario.name}: {T:g} s at dt = {landing_setup(scenario, db).dt:g} s, one core, best of {ROUNDS}\n")
+          f"{scenario.name}: {T:g} s at dt = {Setup.of(scenario, db).dt:g} s, one core, best of {ROUNDS}\n")
     default, by_memory, by_contacts, sims = {}, {}, {}, {}
     for method, memory in (("convolution", 30.0), ("convolution", 40.0), ("state_space", 40.0)):
         sims[method, memory] = radiation(scenario, db, method, memory)

@@ -35,7 +35,7 @@ from boatland.waves.excitation import excitation_coefficients
 from boatland.waves.synthesis import (elevation_series, harmonic_series, harmonic_sum, synthesis_costs,
                                       synthesis_method)
 from _timing import best_of, cpu_name
-from boatland.landing.setup import landing_setup
+from boatland.landing.setup import Setup
 
 DT = 0.05
 
@@ -54,7 +54,7 @@ def timed(fn, repeats):
 
 def synthesis_table(scenario, db):
     """Direct sum against NUFFT for the default sea's excitation, 6 outputs, on the RK4 half steps."""
-    waves = landing_setup(scenario, db).waves
+    waves = Setup.of(scenario, db).waves
     omega, beta, X = excitation_table(db)
     x0, y0, psi = scenario.start_pose()
     harmonic_series(np.array([1.0]), np.ones((6, 1)), 0.0, 0.1, 100, method="nufft")  # warm-up (compile)
@@ -111,8 +111,8 @@ def trial_table(scenario, db, durations):
     print("|---|---|---|---|---|---|---|")
     for duration in durations:
         sc = scenario.replace({"radiation.method": "state_space", "simulation.duration": duration})
-        memory = landing_setup(sc, db).memory()
-        n_comp = landing_setup(sc, db).waves.realise(sc.simulation.seed, duration).size
+        memory = Setup.of(sc, db).memory()
+        n_comp = Setup.of(sc, db).waves.realise(sc.simulation.seed, duration).size
         simulate(sc, db, memory=memory)                                   # warm-up: pile table, compile
         before = after = np.full(2, np.inf)
         for _ in range(3 if duration < 5000 else 2):

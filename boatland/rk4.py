@@ -1,5 +1,7 @@
 r"""Classic fourth-order Runge–Kutta (Kutta 1901) as data: its Butcher tableau, read by the integrator
-(:mod:`boatland.integrate.cummins`) and the contact kernel (:mod:`boatland.contact.fender`).
+(:mod:`boatland.integrate.cummins`), which hands the weights on to the contact kernel
+(:func:`boatland.contact.fender.accumulate_sliding`: a step's slide and friction work are the b-weighted
+quadrature of its stages).
 
 .. math::
     \begin{array}{c|cccc}

@@ -37,7 +37,8 @@ EXECUTORS = ("local", "dask")
 
 class Shared(NamedTuple):
     """An argument many tasks share (e.g. a case's kernel arrays and pile tables): passed as it is to local
-    workers, scattered once per ``key`` to a Dask cluster. ``value`` None is passed as None."""
+    workers, scattered once per ``key`` and :meth:`Executor.map` call to a Dask cluster. ``value`` None is
+    passed as None."""
 
     key: Any
     value: Any
@@ -162,6 +163,7 @@ class Executor:
                 yield fn(*(a.value if isinstance(a, Shared) else a for a in args))
             return
         submit = self._dask_submit if self.executor == "dask" else self._local_submit
+        self._scattered = {}                       # shared values are this call's (a key may mean another later)
         futures: list = []
         finished: queue.SimpleQueue = queue.SimpleQueue()
         handed = 0
@@ -188,8 +190,8 @@ class Executor:
         def ship(a):
             if not isinstance(a, Shared):
                 return a
-            if a.key not in self._scattered:      # one scattered copy of each shared value
-                self._scattered[a.key] = None if a.value is None else self._client.scatter(a.value, hash=False)
+            if a.key not in self._scattered:      # one scattered copy of each shared value (a list too: as one)
+                self._scattered[a.key] = None if a.value is None else self._client.scatter([a.value], hash=False)[0]
             return self._scattered[a.key]
 
         return self._client.submit(fn, *(ship(a) for a in args), pure=False)

@@ -76,7 +76,7 @@ from boatland.freqdomain.screening import slip_transfer
 from boatland.freqdomain.statistics import (distinct_events, incident_probability, response_correlation,
                                             spectral_moments)
 from boatland.freqdomain.statistics import limiting_hs as fd_limiting_hs
-from boatland.landing.setup import Setup, landing_setup
+from boatland.landing.setup import Setup
 from boatland.sea.gaussian import GaussianSea
 from boatland.sea.spectra import SHAPES
 from boatland.sea.states import SeaState
@@ -170,7 +170,7 @@ def level_model(campaign: Campaign, case: int, hs: float | None, db, reference: 
     """The :class:`LevelModel` of ``case`` at ``hs``; with a ``reference`` model of the same case at
     ``hs_reference`` its margins are scaled (:meth:`LandedMargins.scaled`) instead of solved again."""
     sc = level_scenario(campaign, case, hs)
-    setup = landing_setup(sc, db)
+    setup = Setup.of(sc, db)
     waves = setup.waves
     if not isinstance(waves, SeaState):
         raise BoatlandInputError(f"{campaign.source}: method isee needs a spectral sea (spectral parts: "
@@ -282,7 +282,7 @@ def execute_sample(source: str, spec: SampleSpec, loaders, plain: bool = False) 
                 db = ctx["db"][dbkey]
                 rad = sc.radiation
                 mkey = (dbkey, rad.method, rad.memory, rad.tail, rad.taper)
-                setup = model.setup if model.setup.db is db else landing_setup(sc, db)
+                setup = Setup.of(sc, db, model.setup)
                 if mkey not in ctx["memory"]:
                     ctx["memory"][mkey] = setup.memory()
                 if spec.case not in ctx["checked"]:
@@ -649,7 +649,7 @@ def _fd_case(campaign, c, loaders, dbs):
                 if dkey not in dbs:
                     dbs[dkey] = loaders[1](sc)
                 db = dbs[dkey]
-                setup = landing_setup(sc, db)
+                setup = Setup.of(sc, db)
                 landing = LandingSetup.from_scenario(sc, db, setup=setup)
                 parts = sc.sea.waves.parts
                 if len(parts) == 1 and parts[0].spreading is None:

@@ -101,15 +101,16 @@ def check_cases(campaign: Campaign, load_database) -> list[str]:
 
 
 def _checked(campaign: Campaign, load_database) -> dict:
-    """:func:`check_cases`'s work, kept: ``{"warnings", "dbs", "memories"}``."""
+    """:func:`check_cases`'s work, kept: ``{"warnings", "dbs", "memories", "setups"}`` (each case's
+    :class:`~boatland.landing.setup.Setup`, by case index)."""
     key = (campaign.digest(), load_database)
     if key in _CHECKED:
         return _CHECKED[key]
     from boatland.checks import check
-    from boatland.landing.setup import landing_setup
+    from boatland.landing.setup import Setup
     from boatland.tomlspec import SpecError
 
-    problems, warns, dbs = [], [], {}
+    problems, warns, dbs, setups = [], [], {}, {}
     memories: dict = {}
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
@@ -119,7 +120,7 @@ def _checked(campaign: Campaign, load_database) -> dict:
             if dbkey not in dbs:
                 dbs[dbkey] = load_database(sc)
             db = dbs[dbkey]
-            setup = landing_setup(sc, db)
+            setup = setups[case.index] = Setup.of(sc, db)
             mkey = memory_key(dbkey, sc.radiation)
 
             def memory(setup=setup, mkey=mkey):    # made when the rest of the case holds, once per memory
@@ -134,7 +135,7 @@ def _checked(campaign: Campaign, load_database) -> dict:
     if problems:
         raise SpecError(campaign.source, problems)
     _CHECKED.clear()                               # one campaign at a time: bounded memory
-    _CHECKED[key] = {"warnings": tuple(dict.fromkeys(warns)), "dbs": dbs, "memories": memories}
+    _CHECKED[key] = {"warnings": tuple(dict.fromkeys(warns)), "dbs": dbs, "memories": memories, "setups": setups}
     return _CHECKED[key]
 
 
@@ -168,7 +169,7 @@ class CasePreparation:
     """case → :class:`CaseData` (or None), made the first time it is asked for — when the first trial of the
     case is handed to the executor, so that the workers start on the first case while the next ones are
     prepared. Kernel arrays are compiled once per radiation memory and time step; the pile's tables of
-    every case are made together when the first case is (:func:`_campaign_tables`), or taken from
+    every case are made together when the first case is (:func:`campaign_tables`), or taken from
     ``background`` (:class:`BackgroundWork`) which made them beside the checks."""
 
     def __init__(self, campaign: Campaign, load_database, background: "BackgroundWork | None" = None):
@@ -187,7 +188,8 @@ class CasePreparation:
 
                     self.tables_in = True
                     remember_tables(self.background.tables() if self.background is not None else
-                                    campaign_tables(self.campaign, self.load_database, self.checked["dbs"]))
+                                    campaign_tables(self.campaign, self.load_database, self.checked["dbs"],
+                                                    self.checked["setups"]))
                 try:
                     self.cases[case] = self._prepare(case)
                 except Exception:  # noqa: BLE001 — its trials meet it again and record it
@@ -195,12 +197,11 @@ class CasePreparation:
         return self.cases[case]
 
     def _prepare(self, case: int) -> CaseData:
-        from boatland.landing.setup import landing_setup
         from boatland.trial.simulate import motion_arrays, pile_tables
 
-        sc = self.campaign.scenario_for(first_trial(self.campaign, case))
+        setup = self.checked["setups"][case]               # the one the checks looked at
+        sc = setup.scenario
         dbkey = sc.vessel.database_key
-        setup = landing_setup(sc, self.checked["dbs"][dbkey])
         mkey = memory_key(dbkey, sc.radiation)
         akey = (mkey, setup.dt)
         if akey not in self.arrays:
@@ -208,13 +209,14 @@ class CasePreparation:
         return CaseData(arrays=self.arrays[akey], tables=tuple(pile_tables(setup)))
 
 
-def campaign_tables(campaign: Campaign, load_database, dbs: dict | None = None) -> list:
+def campaign_tables(campaign: Campaign, load_database, dbs: dict | None = None, setups: dict | None = None) -> list:
     """The ω tables of the pile's scattered wave of every case (:func:`boatland.trial.simulate.pile_tables`),
     the directions of each database and layout made together
     (:func:`boatland.sea.pile.make_tables`; three directions of the ctv24: 1.4 s instead of
     2.6 s). None at all when there are more than a process keeps (then each case makes its own), and none
-    for a case whose tables fail: its own preparation meets the error again."""
-    from boatland.landing.setup import landing_setup
+    for a case whose tables fail: its own preparation meets the error again. ``dbs``, ``setups``: the
+    databases (by key) and the cases' setups (by case) the checks made, where at hand."""
+    from boatland.landing.setup import Setup
     from boatland.sea.pile import TABLE_CACHE_SIZE, make_tables
     from boatland.trial.simulate import pile_table_request
 
@@ -222,11 +224,14 @@ def campaign_tables(campaign: Campaign, load_database, dbs: dict | None = None) 
     dbs = {} if dbs is None else dict(dbs)      # databases by key, loaded where missing
     for case in campaign.cases:
         try:
-            sc = campaign.scenario_for(first_trial(campaign, case.index))
+            setup = (setups or {}).get(case.index)
+            sc = setup.scenario if setup is not None else campaign.scenario_for(first_trial(campaign, case.index))
             dbkey = sc.vessel.database_key
-            if dbkey not in dbs:
-                dbs[dbkey] = load_database(sc)
-            request = pile_table_request(landing_setup(sc, dbs[dbkey]))
+            if setup is None:
+                if dbkey not in dbs:
+                    dbs[dbkey] = load_database(sc)
+                setup = Setup.of(sc, dbs[dbkey])
+            request = pile_table_request(setup)
         except Exception:  # noqa: BLE001
             continue
         if request is not None:
@@ -314,7 +319,7 @@ def _screening(campaign: Campaign, loaders) -> tuple[np.ndarray, list[str]]:
     there is one)."""
     from boatland.freqdomain.landing import LandingSetup
     from boatland.freqdomain.screening import sea_response
-    from boatland.landing.setup import landing_setup
+    from boatland.landing.setup import Setup
 
     out = np.full(len(campaign.cases), math.nan)
     why = [""] * len(campaign.cases)
@@ -335,7 +340,7 @@ def _screening(campaign: Campaign, loaders) -> tuple[np.ndarray, list[str]]:
                 if key not in dbs:
                     dbs[key] = loaders[1](sc)
                 db = dbs[key]
-                setup = landing_setup(sc, db)
+                setup = Setup.of(sc, db)
                 landing = LandingSetup.from_scenario(sc, db, setup=setup)
                 access = campaign.access if campaign.access is not None else \
                     sc.simulation.duration - exposure_start(sc)

@@ -64,12 +64,13 @@ def execute_trial(source: str, spec: TrialSpec, loaders, keep_dir: str | None = 
     """Run one trial of the campaign file ``source`` and return its summary row (never raises for a
     failing trial: the row carries status −1 and the error).
 
-    ``shared``: its case's :class:`CaseData` from :func:`prepare_cases` (the memory checked there). Without
+    ``shared``: its case's :class:`~boatland.campaign.prepare.CaseData` from
+    :func:`boatland.campaign.prepare.prepare_cases` (the memory checked there). Without
     it the worker makes the radiation memory (once per worker), checks it (once per case) and compiles
     the kernel arrays and the pile's tables itself — the same values.
     """
     from boatland.checks.memory import check_radiation
-    from boatland.landing.setup import landing_setup
+    from boatland.landing.setup import Setup
     from boatland.sea.pile import remember_tables
     from boatland.trial.simulate import BlowUpError, simulate
 
@@ -88,7 +89,7 @@ def execute_trial(source: str, spec: TrialSpec, loaders, keep_dir: str | None = 
             if dbkey not in ctx["db"]:
                 ctx["db"][dbkey] = loaders[1](scenario)
             db = ctx["db"][dbkey]
-            setup = landing_setup(scenario, db)
+            setup = Setup.of(scenario, db)
             if shared is not None:
                 remember_tables(shared.tables)
                 run = dict(arrays=shared.arrays)

@@ -16,7 +16,7 @@ from __future__ import annotations
 from boatland.checks.limits import scenario_problems
 from boatland.checks.memory import check_memory
 from boatland.checks.physical import ScenarioCheck, check_against
-from boatland.landing.setup import Setup, landing_setup
+from boatland.landing.setup import Setup
 
 __all__ = ["ScenarioCheck", "check"]
 
@@ -33,7 +33,7 @@ def check(scenario, db, *, memory=False, setup: Setup | None = None) -> Scenario
         when the rest holds: ``True`` makes it (:meth:`Setup.memory`); or pass the one the trials will use,
         or a function returning it (called only then).
     setup : Setup, optional
-        ``landing_setup(scenario, db)`` when already at hand.
+        ``Setup.of(scenario, db)`` when already at hand.
 
     Returns
     -------
@@ -42,7 +42,7 @@ def check(scenario, db, *, memory=False, setup: Setup | None = None) -> Scenario
         ``setup`` it checked (a run starts from it); :meth:`ScenarioCheck.raise_if_problems` raises the
         problems as one :class:`~boatland.tomlspec.SpecError`.
     """
-    setup = landing_setup(scenario, db) if setup is None else setup
+    setup = Setup.of(scenario, db, setup)
     found = check_against(setup)
     problems = found.problems + tuple(p for p in scenario_problems(scenario, db) if p not in found.problems)
     warnings, notes = found.warnings, found.notes

@@ -25,7 +25,7 @@ from pathlib import Path
 from boatland.checks import ScenarioCheck, check
 from boatland.checks.limits import document_problems
 from boatland.errors import BoatlandInputError, BoatlandWarning
-from boatland.hydro.builtin import BUILTIN
+from boatland.hydro.builtin import BUILTIN, load_builtin
 from boatland.hydro.read import load_database
 from boatland.resources import shipped_scenarios
 from boatland.scenario.inputs import trial_inputs
@@ -94,7 +94,7 @@ def resolve_database(scenario: Scenario) -> HydroDB:
     """
     v = scenario.vessel
     try:
-        return load_database(v.database if v.database_path is None else v.database_path)
+        return load_builtin(v.database) if v.database_path is None else load_database(v.database_path)
     except SpecError:
         raise
     except BoatlandInputError as exc:

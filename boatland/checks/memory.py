@@ -47,10 +47,10 @@ def check_memory(setup: Setup, memory: RadiationMemory) -> MemoryCheck:
     −8.9e-5, 120 s −1.6e-4 s⁻¹); the passive state-space fit gives +1.2e-4.
     """
     scenario, db = setup.scenario, setup.db
+    if db.M is None:                     # no landed modes without a mass (the physical checks say so)
+        return MemoryCheck((), (), ())
     law = setup.contact_law()
     problems, warns, notes = [], [], []
-    if db.M is None:
-        return MemoryCheck((), (), ())
     try:
         modes = landed_modes(db, law, scenario.thrust.force if (law is not None and scenario.thrust) else 0.0,
                              scenario.thrust.position if scenario.thrust is not None else (0.0, 0.0, 0.0))

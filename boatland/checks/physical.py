@@ -128,7 +128,7 @@ def check_against(setup: Setup) -> ScenarioCheck:
                      + ", ".join(f"{t:.4g} s" for t in cp.undamped))
         if setup.fender.lumped:
             notes.append(f"fender geometry: the static compression under the thrust, "
-                         f"{scenario.thrust.force / len(f.points) / f.stiffness:.3g} m, reaches past the tubes' "
+                         f"{setup.fender.compression:.3g} m, reaches past the tubes' "
                          "axes: c_f is a lumped spring, and the fender pushes on a flat plate at the tubes' front "
                          "along the landing's normal (the contact plane of Ferreira González 2023)")
         if f.rigid:
@@ -152,7 +152,7 @@ def check_against(setup: Setup) -> ScenarioCheck:
         problems += problems_w
         warns += warns_w
     if scenario.landing is not None and mesh is not None:
-        problems += _clearance(scenario, db.mesh)
+        problems += _clearance(scenario, db.mesh, setup.start_pose)
     depth = scenario.sea.water_depth if scenario.sea is not None and scenario.sea.water_depth is not None \
         else db.water_depth
     if mesh is not None and depth <= -float(mesh[:, 2].min()):
@@ -226,10 +226,10 @@ def _footprint_distance(c: np.ndarray, xy: np.ndarray, faces: np.ndarray) -> flo
     return 0.0 if np.any(inside) else d_edges
 
 
-def _clearance(scenario, mesh) -> list[tuple[str, str]]:
+def _clearance(scenario, mesh, start_pose) -> list[tuple[str, str]]:
     """The wetted hull (its footprint) must be clear of the monopile and the struts at t = 0."""
     out = []
-    x, y, psi = scenario.start_pose()
+    x, y, psi = start_pose
     q0 = scenario.initial.displacement
     p = np.array([x, y]) + rotation_2d(math.degrees(psi)) @ q0[:2]
     xy = mesh.vertices[:, :2] @ rotation_2d(math.degrees(psi + q0[5])).T + p

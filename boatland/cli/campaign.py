@@ -46,10 +46,11 @@ def add_parser(sub) -> None:
 def cmd(args) -> int:
     from boatland.campaign import load_campaign, run_campaign
     from boatland.campaign.report import REPORT_FILES, write_report
-    from boatland.campaign.runner import check_cases, failures, start_background
+    from boatland.campaign.prepare import check_cases, start_background
+    from boatland.campaign.runner import failures
     from boatland.checks.files import load, resolve_database
     from boatland.cli.common import check_fits_in_memory
-    from boatland.landing.setup import landing_setup
+    from boatland.landing.setup import Setup
 
     if args.scheduler:
         from boatland.campaign.executor import check_scheduler_address
@@ -86,7 +87,7 @@ def cmd(args) -> int:
             print(f"warning: {w}", file=sys.stderr)
         longest = max((campaign.scenario_for(campaign.trials()[c * campaign.seeds])
                        for c in range(len(campaign.cases))), key=lambda s: s.simulation.duration)
-        check_fits_in_memory(landing_setup(longest, resolve_database(longest)), flag=f"{args.campaign}: duration",
+        check_fits_in_memory(Setup.of(longest, resolve_database(longest)), flag=f"{args.campaign}: duration",
                              copies=min(workers, campaign.n_trials))
     except BaseException:
         if background is not None:

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from boatland.errors import BoatlandInputError
-from boatland.landing.setup import Setup, landing_setup
+from boatland.landing.setup import Setup
 from boatland.sea.pile import Pile, pile_scattered_excitation
 from boatland.vessel.database import HydroDB
 from boatland.waves.excitation import direction_brackets, periodic_directions
@@ -183,7 +183,7 @@ class LandingSetup:
         vessel's axes, μ_s, thrust, the fender's normal and shear laws (the shear damping from its ratio of
         critical for this vessel), additional linear damping, heading, and the monopile's scattered wave
         when the trial applies it. Roll limit: ``roll_limit_deg``, else the largest of
-        ``incidents.roll_limit_deg``, else 10°. ``setup``: ``landing_setup(scenario, db)`` when at hand.
+        ``incidents.roll_limit_deg``, else 10°. ``setup``: ``Setup.of(scenario, db)`` when at hand.
 
         Raises
         ------
@@ -199,7 +199,7 @@ class LandingSetup:
         if len(scenario.landing.struts) != P.shape[0]:
             raise BoatlandInputError(f"{src}: fender.points: {P.shape[0]} points for {len(scenario.landing.struts)} "
                                      "struts")
-        setup = landing_setup(scenario, db) if setup is None else setup
+        setup = Setup.of(scenario, db, setup)
         lim = roll_limit_deg
         if lim is None:
             lim = max(scenario.incidents.roll_limit_deg) if scenario.incidents.roll_limit_deg else 10.0

@@ -1,4 +1,4 @@
-r"""AQWA ``.AH1`` hydrodynamic database (+ optional ``.LIS``) → :class:`~boatland.vessel.HydroDB`.
+r"""AQWA ``.AH1`` hydrodynamic database (+ optional ``.LIS``) → :class:`~boatland.vessel.database.HydroDB`.
 
 Layout of the ``.AH1`` (AQWA-LINE "OPTIONS AHD1" output; notes/hydro-formats.md). Lines starting
 with ``*`` are comments (run date, and the frequencies of the low/high-frequency limits). Then::

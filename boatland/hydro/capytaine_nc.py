@@ -1,4 +1,4 @@
-r"""Capytaine NetCDF dataset (2.x and 3.0) → :class:`~boatland.vessel.HydroDB`.
+r"""Capytaine NetCDF dataset (2.x and 3.0) → :class:`~boatland.vessel.database.HydroDB`.
 
 Layout (Capytaine docs, "Outputs": ``assemble_dataset`` / ``export_dataset``; notes/hydro-formats.md):
 ``added_mass`` and ``radiation_damping`` over (frequency, ``radiating_dof``, ``influenced_dof``) in

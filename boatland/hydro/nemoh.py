@@ -1,4 +1,4 @@
-r"""NEMOH v2 / v3 run folder → :class:`~boatland.vessel.HydroDB`.
+r"""NEMOH v2 / v3 run folder → :class:`~boatland.vessel.database.HydroDB`.
 
 Files read (NEMOH user manuals v2.0 and v3.0; notes/hydro-formats.md):
 

@@ -1,4 +1,4 @@
-r"""WAMIT output (``.1``, ``.3``, ``.hst``, ``.out``) → :class:`~boatland.vessel.HydroDB`.
+r"""WAMIT output (``.1``, ``.3``, ``.hst``, ``.out``) → :class:`~boatland.vessel.database.HydroDB`.
 
 Format (WAMIT User Manual v7, ch. 4 "Output"; notes/hydro-formats.md):
 

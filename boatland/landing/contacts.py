@@ -204,7 +204,7 @@ class FenderOnLanding:
         """The kernel's :class:`~boatland.contact.fender.Contacts`: fender lines along the body y axis on the
         tubes, the normal and shear laws, the friction law."""
         f, struts = self.fender, self.struts
-        c_t = self.period.shear_damping if not f.rigid else 0.0
+        c_t = tuple(self.shear_damping) if not f.rigid else 0.0
         return contact_set(f.points_array, self.axes, self.radius, self.normals, direction=(0.0, 1.0, 0.0),
                            half_width=f.width / 2, bottom=[st.bottom for st in struts],
                            top=[st.top for st in struts], stiffness=f.stiffness, damping=f.damping,
@@ -228,8 +228,9 @@ def fender_on_landing(scenario, db: HydroDB, start_pose=None) -> FenderOnLanding
     landing or a fender. ``start_pose``: ``scenario.start_pose()`` when already at hand."""
     if scenario.fender is None or scenario.landing is None:
         return None
-    x0, y0, _ = scenario.start_pose() if start_pose is None else start_pose
-    to_local = rotation_2d(scenario.vessel.heading_deg).T       # global → local rotation (by −ψ)
+    x0, y0, psi = scenario.start_pose() if start_pose is None else start_pose
+    c, s = np.cos(psi), np.sin(psi)
+    to_local = np.array([[c, s], [-s, c]])                      # global → local rotation (by −ψ)
     struts = scenario.landing.struts
     axes = (np.array([st.position for st in struts], dtype=float) - [x0, y0]) @ to_local.T
     normals = scenario.landing.normals @ to_local.T

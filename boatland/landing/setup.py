@@ -4,7 +4,7 @@ A trial, the screening, the checks and a campaign all start from the same derive
 step, the number of steps, the start pose, the fender on the landing in the vessel's axes (with the
 contact dynamics that bound the time step), the wave model adapted to the database, the monopile whose
 scattered wave the vessel feels, the additional damping and the radiation memory's settings.
-:func:`landing_setup` makes them once; everything downstream reads them from the :class:`Setup`.
+:meth:`Setup.of` makes them once; everything downstream reads them from the :class:`Setup`.
 
 The time step rule (when the file gives none) is
 
@@ -31,7 +31,7 @@ from boatland.sea.pile import Pile
 from boatland.vessel.database import HydroDB, roll_critical_damping
 from boatland.vessel.radiation import RadiationMemory, default_dt, radiation_memory
 
-__all__ = ["Setup", "additional_damping", "landing_setup", "time_step"]
+__all__ = ["Setup", "additional_damping", "time_step"]
 
 
 def time_step(scenario, period: ContactPeriod | None = None) -> float:
@@ -64,7 +64,7 @@ def additional_damping(scenario, db: HydroDB) -> tuple[np.ndarray, np.ndarray]:
 
 @dataclass(frozen=True, eq=False)
 class Setup:
-    """A scenario on its vessel (:func:`landing_setup`).
+    """A scenario on its vessel (:meth:`Setup.of`).
 
     Attributes
     ----------
@@ -95,6 +95,29 @@ class Setup:
     waves: object
     pile: Pile | None
 
+    @classmethod
+    def of(cls, scenario, db: HydroDB, given: "Setup | None" = None) -> "Setup":
+        """The setup of ``scenario`` on the vessel of ``db``; ``given``: one already made, checked to be
+        theirs. A database without a mass matrix gives no contact dynamics (the checks refuse it for a
+        run; the time step then follows the sea alone).
+
+        Raises
+        ------
+        ValueError
+            ``given`` was made from another scenario or database.
+        """
+        if given is not None:
+            if given.scenario is not scenario or given.db is not db:
+                raise ValueError("the setup given was made from another scenario or database")
+            return given
+        pose = scenario.start_pose()
+        fender = fender_on_landing(scenario, db, pose)
+        dt = time_step(scenario, fender.period if fender is not None else None)
+        n = int(math.ceil(scenario.simulation.duration / dt - 1e-9))
+        waves = None if scenario.sea is None else scenario.sea.model(db)
+        return cls(scenario=scenario, db=db, dt=dt, n_steps=n, start_pose=pose, fender=fender, waves=waves,
+                   pile=_pile(scenario, db, waves))
+
     @property
     def source(self) -> str:
         return self.scenario.source
@@ -122,7 +145,9 @@ class Setup:
         return IRFSettings(t_max=rad.memory, dt=default_dt(self.db.omega[-1]), tail=rad.tail, taper=rad.taper)
 
     def memory(self) -> RadiationMemory:
-        """The radiation memory the scenario asks for: IRFs (and the state-space fit for ``state_space``)."""
+        """The radiation memory the scenario asks for: IRFs (and the state-space fit for ``state_space``),
+        computed on every call (a second or so: keep the result; campaigns share one per database and
+        radiation settings)."""
         return radiation_memory(self.db, self.irf_settings(), fit=self.scenario.radiation.method == "state_space")
 
 
@@ -132,15 +157,3 @@ def _pile(scenario, db: HydroDB, waves) -> Pile | None:
         return None
     on = L.diffraction if L.diffraction is not None else db.mesh is not None
     return Pile(L.monopile_diameter / 2, tuple(L.monopile_position), waves.water_depth) if on else None
-
-
-def landing_setup(scenario, db: HydroDB) -> Setup:
-    """The :class:`Setup` of ``scenario`` on the vessel of ``db``. A database without a mass matrix gives no
-    contact dynamics (the checks refuse it for a run; the time step then follows the sea alone)."""
-    pose = scenario.start_pose()
-    fender = fender_on_landing(scenario, db, pose)
-    dt = time_step(scenario, fender.period if fender is not None else None)
-    n = int(math.ceil(scenario.simulation.duration / dt - 1e-9))
-    waves = None if scenario.sea is None else scenario.sea.model(db)
-    return Setup(scenario=scenario, db=db, dt=dt, n_steps=n, start_pose=pose, fender=fender, waves=waves,
-                 pile=_pile(scenario, db, waves))

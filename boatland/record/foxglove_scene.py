@@ -296,12 +296,12 @@ if __name__ == "__main__":      # regenerate the shipped layout from the default
 
     from boatland.record.scene import scene_from_trial
     from boatland.checks.files import default_scenario_path, load_checked
-    from boatland.landing.setup import landing_setup
+    from boatland.landing.setup import Setup
 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         _sc, _db, _ = load_checked(default_scenario_path())
-    _scene = scene_from_trial(landing_setup(_sc, _db), waves=False)
+    _scene = scene_from_trial(Setup.of(_sc, _db), waves=False)
     _path = layout_path()
     _path.write_text(json.dumps(foxglove_layout(len(_scene.fender_points), _scene), indent=2) + "\n")
     print(f"wrote {_path}")

@@ -34,7 +34,7 @@ from boatland.errors import BoatlandInputError
 from boatland.record.columns import BowElevation, Columns, LandingTracker, settle_row, world_pose
 from boatland.record.foxglove_scene import arrow_items, arrow_values_compiled, static_scene
 from boatland.record.scene import Scene, scene_from_trial, scene_metadata
-from boatland.record.schemas import LOG_FORMAT, LOG_LEVEL, RAD2DEG, STEP_TOPICS, TOPICS, file_descriptor_set, \
+from boatland.record.schemas import LOG_FORMAT, LOG_LEVEL, RAD2DEG, TOPICS, file_descriptor_set, \
     message_class
 from boatland.trial.events import track_landing
 from boatland.trial.incidents import RollAbove, SlipDistance, trial_incidents

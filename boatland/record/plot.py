@@ -127,7 +127,6 @@ def figure_of_run(log: RunLog):
     t = c.t
     prov = _provenance(log)
     settled = float(prov.get("waves_from", 0.0))
-    nc = c.mode.shape[1]
     fig, axes = plt.subplots(5, 1, figsize=(11, 11), sharex=True, layout="constrained",
                              gridspec_kw={"height_ratios": [1.1, 1, 1.1, 0.8, 1]})
     ax = axes[0]

@@ -346,14 +346,14 @@ def scene_from_metadata(meta: dict) -> Scene:
     try:
         from boatland.scenario.scenario import scenario_from_dict
         from boatland.checks.files import resolve_database
-        from boatland.landing.setup import landing_setup
+        from boatland.landing.setup import Setup
 
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             doc = json.loads(meta["scenario"])
             sc = scenario_from_dict(doc, source=meta.get("scenario_source", "<log>"),
                                     base_dir=meta.get("scenario_base_dir") or None)
-            return scene_from_trial(landing_setup(sc, resolve_database(sc)))
+            return scene_from_trial(Setup.of(sc, resolve_database(sc)), start_pose=start_pose)
     except Exception as exc:  # noqa: BLE001 — any failure to rebuild only costs the hull mesh and the sea
         notes.append(f"scenario of the log not re-readable here ({type(exc).__name__}: {exc}); "
                      "showing a box hull and no sea surface")

@@ -122,7 +122,7 @@ class Scenario:
         """(x [m], y [m], heading ψ [rad]) of the reference point at t = 0, before ``initial`` is added.
 
         What needs the vessel's database too (the time step, the contacts, the wave model, the pile) is
-        :func:`boatland.landing.setup.landing_setup`."""
+        :meth:`boatland.landing.setup.Setup.of`."""
         x, y = self.vessel.position
         return float(x), float(y), math.radians(self.vessel.heading_deg)
 

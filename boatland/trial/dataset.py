@@ -15,6 +15,7 @@ import numpy as np
 
 from boatland import __version__
 from boatland.conventions import DOF_NAMES, DOF_UNITS
+from boatland.trial.incidents import RollAbove, SlipDistance
 
 __all__ = ["result_dataset", "TANGENTS", "MODE_MEANINGS"]
 
@@ -120,7 +121,8 @@ def result_dataset(r):
         **_flat_inputs(r.inputs),
         "incident_slip_distance_m": np.asarray(inc.slip_distance if inc else (0.1,), dtype=float),
         "incident_roll_limit_deg": np.asarray(inc.roll_limit_deg if inc else (), dtype=float),
-        "incident_other": "contact loss, slid off the landing",
+        "incident_other": ", ".join(d.name for d in r.incident_definitions
+                                    if not isinstance(d, (SlipDistance, RollAbove))),
         "inputs": json.dumps(r.inputs, default=float),
         "summary": json.dumps(r.summary(), default=float),
         "provenance": json.dumps(r.provenance, default=str),

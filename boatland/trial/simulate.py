@@ -22,7 +22,7 @@ from boatland import __version__
 from boatland.checks.memory import check_radiation
 from boatland.errors import BoatlandInputError
 from boatland.integrate.cummins import OUTCOME_STATUSES
-from boatland.landing.setup import Setup, landing_setup
+from boatland.landing.setup import Setup
 from boatland.reproducible import pinned
 from boatland.scenario.inputs import trial_inputs
 from boatland.scenario.scenario import Scenario
@@ -165,7 +165,7 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
         sampler chose (:mod:`boatland.campaign.isee`). The scenario still sets everything else (its
         sea's ramp, the monopile's scattered wave). Its ``digest()`` goes into the provenance.
     setup : Setup, optional
-        ``landing_setup(scenario, db)``, when the caller has made it already.
+        ``Setup.of(scenario, db)``, when the caller has made it already.
 
     Returns
     -------
@@ -178,7 +178,9 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
         NaN or runaway motion: the partial result is attached, nothing pretends success.
     """
     wall0 = time.perf_counter()
-    setup = landing_setup(scenario, db) if setup is None else setup
+    if db.M is None:
+        raise BoatlandInputError(f"database {db.name!r} has no mass matrix M: a time-domain run needs it")
+    setup = Setup.of(scenario, db, setup)
     dt, n = setup.dt, setup.n_steps
     if arrays is None:
         if memory is None:

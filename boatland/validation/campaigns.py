@@ -95,10 +95,10 @@ def screening_probability(scenario, db, hs: float, *, access: float, Tp: float, 
     relative heading ``heading`` (Wu 2014; Grøtting 2015 eq. 3.38) — what a campaign stores beside its cases."""
     from boatland.freqdomain.landing import LandingSetup
     from boatland.freqdomain.screening import sea_response
-    from boatland.landing.setup import landing_setup
+    from boatland.landing.setup import Setup
 
     s = scenario.replace({"sea.Hs": hs, "sea.Tp": Tp, "sea.relative_direction_deg": heading})
-    setup = landing_setup(s, db)
+    setup = Setup.of(s, db)
     landing = LandingSetup.from_scenario(s, db, setup=setup)
     return sea_response(db, landing, s.sea.waves.parts, access_duration=access,
                         water_depth=getattr(setup.waves, "water_depth", None)).p_access

@@ -96,11 +96,11 @@ def compare_hinge(db, s) -> HingeComparison:
     from boatland.contact.fender import STICK
     from boatland.freqdomain import first_harmonic, hinged_rao
     from boatland.landing.law import normal_follows
-    from boatland.landing.setup import landing_setup
+    from boatland.landing.setup import Setup
     from boatland.trial.simulate import simulate
     from boatland.waves.dispersion import wavenumber_scalar
 
-    setup = landing_setup(s, db)
+    setup = Setup.of(s, db)
     r = simulate(s, db, setup=setup)
     wave = s.sea.waves
     w = wave.omega

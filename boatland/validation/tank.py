@@ -65,7 +65,7 @@ def first_incidents(path, seeds, limit: float = LIMIT, duration: float | None = 
     """Run the scenario file ``path`` for each seed; the first time a fender point is more than ``limit``
     from where it landed, counted from the start of the waves (:func:`boatland.trial.simulate.wave_start`)."""
     from boatland.checks.files import load_checked
-    from boatland.landing.setup import landing_setup
+    from boatland.landing.setup import Setup
     from boatland.trial.simulate import simulate, wave_start
 
     with warnings.catch_warnings():
@@ -75,7 +75,7 @@ def first_incidents(path, seeds, limit: float = LIMIT, duration: float | None = 
     if duration is not None:
         changes["simulation.duration"] = duration
     scenario = scenario.replace(changes)
-    memory = landing_setup(scenario, db).memory()
+    memory = Setup.of(scenario, db).memory()
     t0 = wave_start(scenario)
     times, ts, dzs, rolls = [], [], [], []
     for seed in seeds:

@@ -9,3 +9,7 @@
 
 Reading and writing databases is :mod:`boatland.hydro`, one layer up.
 """
+
+from boatland.vessel.database import HullMesh, HydroDB, Provenance
+
+__all__ = ["HullMesh", "HydroDB", "Provenance"]

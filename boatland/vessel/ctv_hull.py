@@ -332,7 +332,7 @@ class CTVCatamaran:
 
     def _section_moments(self, xi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(area, ∫∫ z dA) of one demihull's section at each ξ (z from the waterline, < 0)."""
-        eta, d = self.waterline_half_breadth(xi), self.keel_depth(xi)
+        d = self.keel_depth(xi)
         if self.section == "round":
             # h = d w^p removes the h^(1/p) singularity of the superellipse at the keel
             p = self.bilge_exponent

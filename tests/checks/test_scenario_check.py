@@ -10,7 +10,7 @@ import pytest
 from boatland.tomlspec import SpecError
 from boatland.checks.files import (check_file, default_scenario_path, load, load_checked, resolve_database,
                                      schema_text)
-from boatland.landing.setup import landing_setup
+from boatland.landing.setup import Setup
 
 SCENARIOS = Path(__file__).resolve().parents[2] / "scenarios"
 SHIPPED = sorted(SCENARIOS.glob("*.toml"))
@@ -28,7 +28,7 @@ def test_default_scenario_is_the_quick_start_trial():
     assert default_scenario_path().resolve() == (SCENARIOS / "ctv_landing.toml").resolve()   # scenarios/ links to the package
     scenario, db, check = load_checked(default_scenario_path())
     assert db.name and check.ok
-    assert landing_setup(scenario, db).dt == 0.05
+    assert Setup.of(scenario, db).dt == 0.05
 
 
 def test_problems_give_exit_status_2_and_one_line_each(tmp_path):

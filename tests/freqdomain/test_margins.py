@@ -14,7 +14,7 @@ from boatland.freqdomain.landing import LandingSetup
 from boatland.sea.gaussian import GaussianSea
 from boatland.checks.files import load, resolve_database
 from boatland.trial.simulate import exposure_start
-from boatland.landing.setup import landing_setup
+from boatland.landing.setup import Setup
 
 REPO = __import__("pathlib").Path(__file__).resolve().parents[2]
 CTV24_LANDING = REPO / "scenarios" / "ctv24_landing.toml"   # the figures' vessel (the first default)
@@ -27,7 +27,7 @@ def margins(hs, rel, access, directions=16, kappa=0.3):
             {"sea.Hs": hs, "sea.relative_direction_deg": rel})
         sc = sc.replace({"simulation.duration": exposure_start(sc) + 30.0 + access})
         db = resolve_database(sc)
-        setup = landing_setup(sc, db)
+        setup = Setup.of(sc, db)
         dt, n = setup.dt, setup.n_steps
         g = GaussianSea(sea=setup.waves, dt=dt, n_steps=n)
         x0, y0, _ = sc.start_pose()
@@ -136,7 +136,7 @@ def test_one_margin_tracks_rice_where_the_screening_assumes_it(gamma):
         sc = load(CTV24_LANDING).replace({"sea.Hs": 0.16, "sea.gamma": gamma})
         sc = sc.replace({"simulation.duration": exposure_start(sc) + 30.0 + 1800.0})
         db = resolve_database(sc)
-        setup = landing_setup(sc, db)
+        setup = Setup.of(sc, db)
         dt, n = setup.dt, setup.n_steps
         g = GaussianSea(sea=setup.waves, dt=dt, n_steps=n)
         x0, y0, _ = sc.start_pose()

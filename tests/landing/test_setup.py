@@ -6,7 +6,7 @@ import math
 import pytest
 
 from boatland.landing.contacts import contact_period
-from boatland.landing.setup import additional_damping, landing_setup
+from boatland.landing.setup import Setup, additional_damping
 from boatland.vessel.database import roll_critical_damping
 
 from box_vessel import make  # a CTV-like scenario on the box vessel (fixture box_db)
@@ -19,9 +19,9 @@ def test_contact_period_and_dt_rule(box_db):
     # two contacts in parallel along the surge axis, lightly damped: T ≈ 2π √(m / 2c)
     assert cp.period == pytest.approx(2 * math.pi * math.sqrt(m / 2e6), rel=0.05)
     assert cp.undamped[0] == pytest.approx(2 * math.pi * math.sqrt(cp.m_eff[0] / 1e6))
-    assert landing_setup(s, box_db).dt == 0.05
+    assert Setup.of(s, box_db).dt == 0.05
     stiff = make({"fender.stiffness": 1e8}, remove=("simulation.dt",))
-    assert landing_setup(stiff, box_db).dt == pytest.approx(contact_period(stiff, box_db).period / 20)
+    assert Setup.of(stiff, box_db).dt == pytest.approx(contact_period(stiff, box_db).period / 20)
 
 
 def test_roll_damping_fraction_of_critical(box_db):
@@ -41,7 +41,7 @@ def test_the_setup_derives_each_value_once_and_agrees_with_its_parts(box_db, mon
     real = contacts.contact_period
     monkeypatch.setattr(contacts, "contact_period", lambda *a: calls.append(a) or real(*a))
     s = make(remove=("simulation.dt",))
-    setup = landing_setup(s, box_db)
+    setup = Setup.of(s, box_db)
     kernel, law = setup.contacts(), setup.contact_law()
     assert len(calls) == 1
     assert setup.dt == pytest.approx(min(0.05, 7.0 / 100, setup.contact_period.dt_limit))
@@ -50,4 +50,4 @@ def test_the_setup_derives_each_value_once_and_agrees_with_its_parts(box_db, mon
     assert law.c_t == pytest.approx(setup.fender.shear_damping) and law.k_t == pytest.approx(s.fender.shear_stiffness)
     assert setup.start_pose == s.start_pose()
     assert setup.pile == (3.25, (0.0, 0.0), math.inf)         # on by default: the database has a hull mesh
-    assert landing_setup(s.replace({"landing.diffraction": False}), box_db).pile is None
+    assert Setup.of(s.replace({"landing.diffraction": False}), box_db).pile is None

@@ -15,7 +15,7 @@ from boatland.checks.files import load, load_checked, resolve_database
 from boatland.contact.fender import STICK
 from boatland.freqdomain.landing import LandingSetup
 from boatland.freqdomain.screening import screening_grid, slip_transfer
-from boatland.landing.setup import landing_setup
+from boatland.landing.setup import Setup
 from boatland.trial.simulate import simulate
 
 REPO = Path(__file__).resolve().parents[2]
@@ -64,7 +64,7 @@ def test_three_tubes_are_three_contacts_in_the_checks_the_trial_and_the_screenin
     _, sc, db = three
     assert len(sc.landing.struts) == 3 and len(sc.fender.points) == 3
     assert check(sc, db, memory=True).ok
-    setup = landing_setup(sc, db)
+    setup = Setup.of(sc, db)
     assert setup.contacts()[0].shape[0] == 3 and setup.contact_law().n_points == 3
     r = simulate(sc, db, setup=setup)
     assert r.completed and r.mode.shape[1] == 3 and r.fn.shape == (len(r.t), 3)

@@ -11,7 +11,7 @@ from mcap_protobuf.decoder import DecoderFactory
 from boatland.record.foxglove_scene import foxglove_layout, layout_path
 from boatland.record.scene import COLORS, FORCE_SCALE, MODE_COLORS, PILE_BOTTOM, PILE_TOP
 from boatland.record.schemas import TOPICS, message_class
-from boatland.landing.setup import landing_setup
+from boatland.landing.setup import Setup
 
 
 def _messages(path, topic):
@@ -60,7 +60,7 @@ def test_static_scene_hull_pile_tubes_fender_and_sea(recorded):
         assert c.pose.position.z == 0.5 * (top + bottom) and c.size.z == top - bottom > 0   # the tube's real ends
     (ln,) = ents["fender"].lines
     ends = np.array([[p.x, p.y, p.z] for p in ln.points]).reshape(-1, 2, 3)
-    P = np.asarray(landing_setup(sc, db).contacts()[0]).reshape(-1, 3)
+    P = np.asarray(Setup.of(sc, db).contacts()[0]).reshape(-1, 3)
     np.testing.assert_allclose(ends.mean(axis=1), P, atol=1e-12)          # one line per contact, centred on it
 
 
@@ -102,7 +102,7 @@ def test_compiled_arrows_equal_the_readable_reference(recorded):
 
     r, sc, db = recorded.result, recorded.scenario, recorded.db
     for pose in (sc.start_pose(), (-3.0, 4.0, 0.7)):
-        scene = scene_from_trial(landing_setup(sc, db), start_pose=pose, waves=False)
+        scene = scene_from_trial(Setup.of(sc, db), start_pose=pose, waves=False)
         ref = arrow_values(scene, r.x, r.fn, r.ft, r.mode)
         np.testing.assert_allclose(arrow_values_compiled(scene, r.x, r.fn, r.ft, r.mode), ref, rtol=1e-12, atol=1e-12)
         assert np.isfinite(ref).all()
@@ -115,7 +115,7 @@ def test_shipped_layout_is_the_generated_one_and_names_real_fields(recorded):
     from boatland.record.scene import scene_from_trial
 
     sc, db = recorded.scenario, recorded.db
-    scene = scene_from_trial(landing_setup(sc, db), waves=False)
+    scene = scene_from_trial(Setup.of(sc, db), waves=False)
     assert shipped == json.loads(json.dumps(foxglove_layout(len(scene.fender_points), scene)))
     cfg = shipped["configById"]
     panels = set()

@@ -145,7 +145,7 @@ def test_compiled_encoder_equals_the_readable_layout(recorded):
     from boatland.record.foxglove_scene import arrow_values
     from boatland.record.mcap_log import NS, _Layout, block_values
     from boatland.record.scene import scene_from_trial
-    from boatland.landing.setup import landing_setup
+    from boatland.landing.setup import Setup
 
     r = recorded.result
     k0, k1 = 600, 620
@@ -156,7 +156,7 @@ def test_compiled_encoder_equals_the_readable_layout(recorded):
     pose = (-16.925, 3.0, 0.3)
     tr, q = world_pose(blk.x, pose)
     c = Columns(**vars(blk), slip=slip, eta_bow=eta, translation=tr, quaternion=q)
-    scene = scene_from_trial(landing_setup(recorded.scenario, recorded.db), start_pose=pose, waves=False)
+    scene = scene_from_trial(Setup.of(recorded.scenario, recorded.db), start_pose=pose, waves=False)
     arrows = arrow_values(scene, blk.x, blk.fn, blk.ft, blk.mode)
     lay = _Layout(2)
     t_ns = np.rint(blk.t * NS).astype(np.int64) + 1_790_000_000 * NS      # log times of a run in 2026

@@ -106,10 +106,10 @@ def test_default_blueprint_has_a_camera_on_the_landing_and_the_plot_views(record
 
     from boatland.record.rerun_log import blueprint
     from boatland.record.scene import scene_from_trial
-    from boatland.landing.setup import landing_setup
+    from boatland.landing.setup import Setup
 
     sc, db = recorded.scenario, recorded.db
-    scene = scene_from_trial(landing_setup(sc, db), waves=False)
+    scene = scene_from_trial(Setup.of(sc, db), waves=False)
     eye, target = scene.camera()
     bow = scene.to_world(scene.fender_points.mean(axis=0))
     x0, y0, psi = sc.start_pose()

@@ -15,7 +15,7 @@ from boatland.scenario.scenario import scenario_from_dict
 from boatland.sea.spectra import SpectrumPart
 from boatland.sea.states import SeaState, wave_excitation
 from boatland.trial.simulate import simulate, wave_ramp
-from boatland.landing.setup import landing_setup
+from boatland.landing.setup import Setup
 
 
 def sea(**kw):
@@ -95,7 +95,7 @@ def test_the_trial_runs_on_exactly_these_components():
         "vessel": {"database": "ctv24"}, "radiation": {"method": "state_space"},
         "sea": {"kind": "jonswap", "Hs": 0.5, "Tp": 6.0, "relative_direction_deg": 150.0}})
     db = load_builtin("ctv24")
-    setup = landing_setup(s, db)
+    setup = Setup.of(s, db)
     dt, n = setup.dt, setup.n_steps
     g = GaussianSea(sea=setup.waves, dt=dt, n_steps=n)
     u = np.random.default_rng(1).standard_normal(g.n_coefficients)

@@ -10,7 +10,7 @@ from boatland.freqdomain.harmonic import first_harmonic
 from boatland.sea.pile import pile_scattered_components
 from boatland.checks.files import default_scenario_path, load_checked
 from boatland.checks.physical import check_against
-from boatland.landing.setup import landing_setup
+from boatland.landing.setup import Setup
 
 
 @pytest.fixture(scope="module")
@@ -23,9 +23,9 @@ def regular():
 
 def test_diffraction_is_on_by_default_with_a_hull_mesh_and_can_be_switched_off(regular):
     sc, db = regular
-    assert db.mesh is not None and landing_setup(sc, db).pile == (3.25, (0.0, 0.0), math.inf)
-    assert landing_setup(sc.replace({"landing.diffraction": False}), db).pile is None
-    check = check_against(landing_setup(sc.replace({"landing.diffraction": True}), db.replace(mesh=None)))
+    assert db.mesh is not None and Setup.of(sc, db).pile == (3.25, (0.0, 0.0), math.inf)
+    assert Setup.of(sc.replace({"landing.diffraction": False}), db).pile is None
+    check = check_against(Setup.of(sc.replace({"landing.diffraction": True}), db.replace(mesh=None)))
     assert any(k == "landing.diffraction" and "no hull mesh" in m for k, m in check.problems)
 
 
@@ -33,10 +33,10 @@ def test_the_added_force_is_the_scattered_wave_force_of_the_component(regular):
     sc, db = regular
     x0, y0, psi = sc.start_pose()
     dt, n = 0.05, 2400
-    waves = landing_setup(sc, db).waves
+    waves = Setup.of(sc, db).waves
     kw = dict(seed=1, dt=dt, n_steps=n, x0=x0, y0=y0, heading_deg=float(np.degrees(psi)), ramp_time=0.0)
     F0 = waves.excitation(db, **kw)
-    F1 = waves.excitation(db, pile=landing_setup(sc, db).pile, **kw)
+    F1 = waves.excitation(db, pile=Setup.of(sc, db).pile, **kw)
     comp = waves.realise(1, n * dt)
     w, th, a, phi, k = comp.omega[0], comp.theta[0], comp.a[0], comp.phi[0], comp.k[0]
     Xs = pile_scattered_components(db, (x0, y0), np.degrees(psi), 3.25, [w], [th])[:, 0]

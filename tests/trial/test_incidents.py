@@ -1,7 +1,6 @@
 """Incident definitions (boatland.trial.incidents): names are the store keys and parse back; each one is
 found in a hand-made trial where its time is known, after the settling and within an access."""
 
-import math
 
 import numpy as np
 import pytest

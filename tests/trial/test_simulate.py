@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from boatland.trial.simulate import BlowUpError, simulate
-from boatland.landing.setup import Setup, landing_setup
+from boatland.landing.setup import Setup
 
 
 def test_calm_water_holds_the_thrust_symmetrically(landing):
@@ -65,7 +65,7 @@ def test_progress_is_reported_up_to_the_last_step(landing):
     sc = sc.replace({"simulation.duration": 60.0})
     seen = []
     r = simulate(sc, db, progress=lambda done, total: seen.append((done, total)))
-    n = landing_setup(sc, db).n_steps
+    n = Setup.of(sc, db).n_steps
     assert seen and all(total == n for _, total in seen)
     assert [d for d, _ in seen] == sorted(d for d, _ in seen) and seen[-1][0] == n
     assert r.completed and len(r.t) == n + 1
@@ -131,7 +131,7 @@ def test_a_trial_from_shipped_kernel_arrays_and_pile_tables_is_the_same_trial(la
     sc, db = landing
     s = sc.replace({"simulation.duration": 150.0, "sea.Hs": 0.8, "sea.relative_direction_deg": 150.0})
     own = simulate(s, db)
-    setup = landing_setup(s, db)
+    setup = Setup.of(s, db)
     arrays = pickle.loads(pickle.dumps(sim.motion_arrays(setup, setup.memory())))
     tables = pickle.loads(pickle.dumps(sim.pile_tables(setup)))
     assert len(tables) == 1                                           # long-crested: one direction
@@ -158,10 +158,10 @@ def test_the_same_seed_gives_the_same_sea_whatever_the_duration(landing):
 
     sc, db = landing
     short, long_ = sc.replace({"simulation.duration": 60.0}), sc.replace({"simulation.duration": 600.0})
-    waves = landing_setup(sc, db).waves
+    waves = Setup.of(sc, db).waves
     a, b = waves.realise(sc.simulation.seed, 60.0), waves.realise(sc.simulation.seed, 600.0)
     assert a.size == b.size > 256 and all(np.array_equal(p, q) for p, q in zip(a, b))
-    dt = landing_setup(sc, db).dt
+    dt = Setup.of(sc, db).dt
     n = int(round(60.0 / dt)) + 1
     eta60 = elevation_series(a, 10.0, 0.0, 0.0, dt, n)
     eta600 = elevation_series(b, 10.0, 0.0, 0.0, dt, int(round(600.0 / dt)) + 1)[:n]

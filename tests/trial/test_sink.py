@@ -5,7 +5,7 @@ import pytest
 
 from boatland.trial.sink import TrialSink
 from boatland.trial.simulate import BlowUpError, simulate
-from boatland.landing.setup import landing_setup
+from boatland.landing.setup import Setup
 
 
 class Collector:
@@ -36,7 +36,7 @@ def test_blocks_cover_every_step_and_equal_the_result(landing):
     assert sink.info.n_steps == len(r.t) - 1 and sink.result is r
     ks = [b["k"] for b in sink.blocks]
     assert ks[0][0] == 0 and ks[-1][1] == len(r.t) and all(a[1] == b[0] for a, b in zip(ks, ks[1:]))
-    per = round(1.0 / landing_setup(sc, db).dt)                                     # one second of simulated time,
+    per = round(1.0 / Setup.of(sc, db).dt)                                     # one second of simulated time,
     assert all((k1 - k0) % per == 0 for k0, k1 in ks[:-1]) and max(k1 - k0 for k0, k1 in ks) >= per  # or several
     for name in ("t", "x", "mode", "fn", "ft", "tpos", "F_exc"):
         np.testing.assert_array_equal(np.concatenate([b[name] for b in sink.blocks]), getattr(r, name))

@@ -28,7 +28,7 @@ from boatland.freqdomain.screening import landed_response
 from pathlib import Path
 
 from boatland.checks.files import load_checked
-from boatland.landing.setup import landing_setup
+from boatland.landing.setup import Setup
 from boatland.trial.simulate import exposure_start, simulate
 
 HS, TP, BETA, ACCESS, SEEDS = 0.04, 7.0, 90.0, 1800.0, 4
@@ -45,7 +45,7 @@ def beam():
 @pytest.mark.slow
 def test_landed_roll_is_not_locked_and_matches_the_time_domain(beam):
     s, db = beam
-    memory = landing_setup(s, db).memory()
+    memory = Setup.of(s, db).memory()
     sums = np.zeros(4)
     for k in range(SEEDS):
         r = simulate(s.replace({"simulation.seed": trial_seed(13, k)}), db, memory=memory)

@@ -60,7 +60,7 @@ def test_quick_report_names_every_case_with_its_reference_and_tolerance(quick):
         assert f"**Reference.** {c.reference}" in text, c.name
         assert f"**Tolerance.** {c.tolerance}." in text, c.name
         assert f"— **{verdicts[c.name]}**" in text.splitlines()[0], c.name
-        row = next(line for line in summary.splitlines() if f"(#case-" in line and f"-{c.name})" in line)
+        row = next(line for line in summary.splitlines() if "(#case-" in line and f"-{c.name})" in line)
         assert f"**{verdicts[c.name]}**" in row and c.tolerance.replace("|", "\\|") in row and c.cite in row, row
         assert "| check | measured | tolerance | verdict |" in text, c.name
     assert set(verdicts.values()) <= {"PASS", "MISS"}, verdicts                 # ERROR would be a bug

@@ -22,7 +22,7 @@ from boatland.sea.states import RegularWave, SeaState, excitation_table
 from boatland.vessel.directions import (SYMMETRY_RTOL, direction_coverage, direction_problem,
                                             full_circle_excitation, port_starboard_symmetry)
 from boatland.checks.physical import check_against
-from boatland.landing.setup import landing_setup
+from boatland.landing.setup import Setup
 
 
 @pytest.fixture(scope="module")
@@ -189,26 +189,26 @@ def scenario(repo_root):
 
 def test_scenario_check_names_the_direction_key(scenario, asymmetric, half, full):
     sc = scenario.replace({"sea.relative_direction_deg": 225.0})
-    check = check_against(landing_setup(sc, asymmetric))
+    check = check_against(Setup.of(sc, asymmetric))
     assert ("sea.relative_direction_deg",
             "225° is outside the directions of database 'ctv24' (0–180°, not port–starboard symmetric: "
             "sway–heave coupling 3e-2 in B); valid: 0–180°") in check.problems
     assert any("asymmetric (sway–heave coupling 3e-2 in B)" in n for n in check.notes)
-    assert check_against(landing_setup(sc, half)).ok and check_against(landing_setup(sc, full)).ok
-    assert "completed to 360° by port–starboard symmetry" in " ".join(check_against(landing_setup(sc, half)).notes)
-    assert "database directions 0–355° every 5°: full circle" in check_against(landing_setup(sc, full)).notes
-    assert check_against(landing_setup(scenario.replace({"sea.relative_direction_deg": 135.0}), asymmetric)).ok
+    assert check_against(Setup.of(sc, half)).ok and check_against(Setup.of(sc, full)).ok
+    assert "completed to 360° by port–starboard symmetry" in " ".join(check_against(Setup.of(sc, half)).notes)
+    assert "database directions 0–355° every 5°: full circle" in check_against(Setup.of(sc, full)).notes
+    assert check_against(Setup.of(scenario.replace({"sea.relative_direction_deg": 135.0}), asymmetric)).ok
 
 
 def test_scenario_check_global_direction_parts_and_spreading(scenario, asymmetric):
     sea = {"parts": [{"kind": "jonswap", "Hs": 1.0, "Tp": 6.0, "direction_deg": 90.0},
                      {"kind": "pm", "Hs": 0.8, "Tp": 9.0, "relative_direction_deg": 150.0, "spreading": 10.0}]}
-    problems = dict(check_against(landing_setup(scenario.replace({"sea": sea}), asymmetric)).problems)
+    problems = dict(check_against(Setup.of(scenario.replace({"sea": sea}), asymmetric)).problems)
     # heading 0°: global 90° is relative 90° (inside); the spread part covers the whole circle
     assert set(problems) == {"sea.parts[1].spreading"}
     assert "short-crested waves (cos-2s, s = 10) about 150° spread over the whole circle" in problems[
         "sea.parts[1].spreading"]
     sea["parts"][0]["direction_deg"] = 250.0
-    problems = dict(check_against(landing_setup(scenario.replace({"sea": sea}), asymmetric)).problems)
+    problems = dict(check_against(Setup.of(scenario.replace({"sea": sea}), asymmetric)).problems)
     assert problems["sea.parts[0].direction_deg"].startswith(
         "250° (250° relative to the vessel's heading 0°) is outside the directions of database 'ctv24'")

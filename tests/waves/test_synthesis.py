@@ -21,10 +21,10 @@ from boatland.sea.spectra import SpectrumPart
 from boatland.sea.states import MeasuredRecord, SeaState, wave_excitation
 from boatland.checks.files import load_checked
 from boatland.waves.excitation import excitation_series, ramp
-from boatland.waves.realisation import Components, regular_components
+from boatland.waves.realisation import regular_components
 from boatland.waves.synthesis import (elevation_series, component_phasors, harmonic_series, harmonic_sum,
                                       synthesis_costs, synthesis_method)
-from boatland.landing.setup import landing_setup
+from boatland.landing.setup import Setup
 
 DT = 0.05
 RTOL = 1e-9  # of each output's RMS (issue 16)
@@ -35,7 +35,7 @@ CTV24_LANDING = Path(__file__).resolve().parents[2] / "scenarios" / "ctv24_landi
 def landing():
     scenario, db, _ = load_checked(CTV24_LANDING)
     x0, y0, psi = scenario.start_pose()
-    pile = landing_setup(scenario, db).pile
+    pile = Setup.of(scenario, db).pile
     assert pile.water_depth == math.inf
     return scenario, db, dict(x0=x0, y0=y0, heading_deg=math.degrees(psi)), pile
 
@@ -62,7 +62,7 @@ def rel_error(fast, direct):
 @pytest.mark.parametrize("duration", [600.0, 10_000.0])
 def test_default_sea_with_the_pile_equals_the_direct_sum(landing, duration, monkeypatch):
     scenario, db, pose, pile = landing
-    comps = landing_setup(scenario, db).waves.realise(scenario.simulation.seed, duration)
+    comps = Setup.of(scenario, db).waves.realise(scenario.simulation.seed, duration)
     n = 2 * int(round(duration / DT)) + 1
     assert synthesis_method(comps.size, n, 6) == "nufft"  # what the trial uses now
     fast, direct = excitation_fast_and_direct(comps, db, pose, pile, duration, monkeypatch)
@@ -114,7 +114,7 @@ def test_measured_record_equals_the_direct_sum(landing, gauge_record, n_componen
 
 def test_ramp_is_still_applied(landing):
     scenario, db, pose, _ = landing
-    comps = landing_setup(scenario, db).waves.realise(1, 600.0)
+    comps = Setup.of(scenario, db).waves.realise(1, 600.0)
     from boatland.sea.states import excitation_table
 
     omega, beta, X = excitation_table(db)
