@@ -81,3 +81,16 @@ def test_schema_text_is_json():
     schema = json.loads(schema_text())
     assert schema["title"] == "boatland scenario"
     assert set(schema["properties"]) >= {"simulation", "vessel", "landing", "fender", "thrust", "sea"}
+
+
+def test_a_built_in_vessel_is_taken_by_its_name_whatever_is_in_the_working_directory(tmp_path, monkeypatch):
+    """``database = "ctv27"`` is the built-in vessel: a file or folder of that name where the command runs
+    does not take its place (a path in a scenario is resolved against the scenario's folder)."""
+    from boatland.checks.files import check_file
+
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "ctv27").mkdir()
+    (tmp_path / "ctv24").write_text("not a database")
+    for name in ("ctv_landing.toml", "ctv24_landing.toml"):
+        report = check_file(SCENARIOS / name)
+        assert report.ok, report.text

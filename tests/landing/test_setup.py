@@ -51,3 +51,23 @@ def test_the_setup_derives_each_value_once_and_agrees_with_its_parts(box_db, mon
     assert setup.start_pose == s.start_pose()
     assert setup.pile == (3.25, (0.0, 0.0), math.inf)         # on by default: the database has a hull mesh
     assert Setup.of(s.replace({"landing.diffraction": False}), box_db).pile is None
+
+
+def test_a_setup_is_used_only_with_its_own_scenario_and_database(box_db):
+    from boatland.landing.setup import Setup
+
+    s = make()
+    setup = Setup.of(s, box_db)
+    assert Setup.of(s, box_db, setup) is setup
+    with pytest.raises(ValueError, match="another scenario or database"):
+        Setup.of(make(), box_db, setup)
+    with pytest.raises(ValueError, match="another scenario or database"):
+        Setup.of(s, box_db.replace(name="other"), setup)
+
+
+def test_a_trial_without_a_mass_matrix_is_one_clear_error(box_db):
+    from boatland.errors import BoatlandInputError
+    from boatland.trial.simulate import simulate
+
+    with pytest.raises(BoatlandInputError, match="'box' has no mass matrix M: a time-domain run needs it"):
+        simulate(make(), box_db.replace(M=None))
