@@ -65,7 +65,7 @@ from scipy.special import ndtri
 from boatland.campaign.plan import Campaign
 from boatland.campaign.executor import Executor, check_scheduler_address
 from boatland.campaign.plan import plan_json
-from boatland.campaign.prepare import check_cases, worker_context
+from boatland.campaign.prepare import check_cases, database_for, memory_key, worker_context
 from boatland.campaign.runner import completed, incident_names, summary_row
 from boatland.campaign.store import INCIDENT_PREFIX, CampaignStore
 from boatland.errors import BoatlandInputError
@@ -203,11 +203,7 @@ def _models(ctx: dict, campaign: Campaign, case: int, hs: float, loaders) -> Lev
     if key not in cache:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            sc0 = level_scenario(campaign, case, None)
-            dbkey = sc0.vessel.database_key
-            if dbkey not in ctx["db"]:
-                ctx["db"][dbkey] = loaders[1](sc0)
-            db = ctx["db"][dbkey]
+            db = database_for(level_scenario(campaign, case, None), ctx["db"], loaders[1])
             ref = cache.get(("ref", case))
             if ref is None:
                 h0 = _case_hs(campaign, case)
@@ -280,8 +276,7 @@ def execute_sample(source: str, spec: SampleSpec, loaders, plain: bool = False) 
                 warnings.simplefilter("ignore")
                 dbkey = sc.vessel.database_key
                 db = ctx["db"][dbkey]
-                rad = sc.radiation
-                mkey = (dbkey, rad.method, rad.memory, rad.tail, rad.taper)
+                mkey = memory_key(dbkey, sc.radiation)
                 setup = Setup.of(sc, db, model.setup)
                 if mkey not in ctx["memory"]:
                     ctx["memory"][mkey] = setup.memory()
@@ -645,10 +640,7 @@ def _fd_case(campaign, c, loaders, dbs):
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")
                 sc = level_scenario(campaign, c, None)
-                dkey = sc.vessel.database_key
-                if dkey not in dbs:
-                    dbs[dkey] = loaders[1](sc)
-                db = dbs[dkey]
+                db = database_for(sc, dbs, loaders[1])
                 setup = Setup.of(sc, db)
                 landing = LandingSetup.from_scenario(sc, db, setup=setup)
                 parts = sc.sea.waves.parts

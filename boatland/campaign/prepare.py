@@ -30,7 +30,8 @@ from boatland.sea.spectra import SHAPES
 from boatland.trial.motion import MotionArrays
 from boatland.trial.simulate import exposure_start
 
-__all__ = ["BackgroundWork", "CaseData", "CasePreparation", "campaign_tables", "check_cases", "first_trial",
+__all__ = ["BackgroundWork", "CaseData", "CasePreparation", "campaign_tables", "check_cases", "database_for",
+           "first_trial",
            "case_screening", "memory_key", "prepare_cases", "start_background", "worker_context"]
 
 
@@ -72,6 +73,15 @@ def worker_context(source: str, loaders) -> dict:
         _WORKER.clear()
         _WORKER[key] = {"campaign": campaign, "db": {}, "memory": {}, "checked": set()}
     return _WORKER[key]
+
+
+def database_for(scenario, databases: dict, load_database):
+    """The database of ``scenario``, loaded once per key into ``databases`` (a process's or a campaign's
+    cache by :attr:`~boatland.scenario.parts.VesselSetup.database_key`)."""
+    key = scenario.vessel.database_key
+    if key not in databases:
+        databases[key] = load_database(scenario)
+    return databases[key]
 
 
 def memory_key(dbkey: str, rad) -> tuple:
@@ -116,12 +126,9 @@ def _checked(campaign: Campaign, load_database) -> dict:
         warnings.simplefilter("ignore")
         for case in campaign.cases:
             sc = campaign.scenario_for(first_trial(campaign, case.index))
-            dbkey = sc.vessel.database_key
-            if dbkey not in dbs:
-                dbs[dbkey] = load_database(sc)
-            db = dbs[dbkey]
+            db = database_for(sc, dbs, load_database)
             setup = setups[case.index] = Setup.of(sc, db)
-            mkey = memory_key(dbkey, sc.radiation)
+            mkey = memory_key(sc.vessel.database_key, sc.radiation)
 
             def memory(setup=setup, mkey=mkey):    # made when the rest of the case holds, once per memory
                 if mkey not in memories:
@@ -228,9 +235,7 @@ def campaign_tables(campaign: Campaign, load_database, dbs: dict | None = None, 
             sc = setup.scenario if setup is not None else campaign.scenario_for(first_trial(campaign, case.index))
             dbkey = sc.vessel.database_key
             if setup is None:
-                if dbkey not in dbs:
-                    dbs[dbkey] = load_database(sc)
-                setup = Setup.of(sc, dbs[dbkey])
+                setup = Setup.of(sc, database_for(sc, dbs, load_database))
             request = pile_table_request(setup)
         except Exception:  # noqa: BLE001
             continue
@@ -336,10 +341,7 @@ def _screening(campaign: Campaign, loaders) -> tuple[np.ndarray, list[str]]:
                 continue
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")
-                key = sc.vessel.database_key
-                if key not in dbs:
-                    dbs[key] = loaders[1](sc)
-                db = dbs[key]
+                db = database_for(sc, dbs, loaders[1])
                 setup = Setup.of(sc, db)
                 landing = LandingSetup.from_scenario(sc, db, setup=setup)
                 access = campaign.access if campaign.access is not None else \

@@ -40,8 +40,8 @@ import numpy as np
 from boatland.campaign.executor import Executor, Shared, check_scheduler_address
 from boatland.campaign.labels import campaign_inputs
 from boatland.campaign.plan import Campaign, TrialSpec, plan_json
-from boatland.campaign.prepare import (BackgroundWork, CaseData, CasePreparation, check_cases, memory_key,
-                                       case_screening, start_background, worker_context)
+from boatland.campaign.prepare import (BackgroundWork, CaseData, CasePreparation, case_screening, check_cases,
+                                       database_for, memory_key, start_background, worker_context)
 from boatland.campaign.stats import clopper_pearson, exponential_mean_interval
 from boatland.campaign.store import INCIDENT_PREFIX, CampaignStore
 from boatland.integrate.cummins import OUTCOME_STATUSES
@@ -85,10 +85,8 @@ def execute_trial(source: str, spec: TrialSpec, loaders, keep_dir: str | None = 
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             scenario = campaign.scenario_for(spec)
+            db = database_for(scenario, ctx["db"], loaders[1])
             dbkey = scenario.vessel.database_key
-            if dbkey not in ctx["db"]:
-                ctx["db"][dbkey] = loaders[1](scenario)
-            db = ctx["db"][dbkey]
             setup = Setup.of(scenario, db)
             if shared is not None:
                 remember_tables(shared.tables)
