@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import contextlib
+import os
+import signal
 import socket
 import subprocess
 import sys
@@ -28,20 +31,26 @@ def dask_cluster():
     address = f"tcp://127.0.0.1:{port}"
     loopback = ["--host", "127.0.0.1", "--dashboard-address", "127.0.0.1:0"]   # every listener (nanny,
     # worker, their HTTP servers, which --no-dashboard does not stop) on 127.0.0.1, none on 0.0.0.0
-    procs = [subprocess.Popen([DASK, "scheduler", "--port", str(port), *loopback],
-                              stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)]
+    # each in a session of its own: a nanny and the worker process it forks are stopped together
+    start = dict(stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
+    procs = [subprocess.Popen([DASK, "scheduler", "--port", str(port), *loopback], **start)]
     try:
         time.sleep(2.0)
         for _ in range(2):
             procs.append(subprocess.Popen([DASK, "worker", address, "--nworkers", "1", "--nthreads", "1",
-                                           *loopback, "--memory-limit", "0"],
-                                          stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL))
+                                           *loopback, "--memory-limit", "0"], **start))
         yield address
     finally:
         for p in procs[::-1]:
             p.terminate()
         for p in procs:
-            p.wait(timeout=30)
+            try:
+                p.wait(timeout=15)
+            except subprocess.TimeoutExpired:   # a nanny that hangs in its graceful close (its scheduler gone)
+                pass
+            with contextlib.suppress(ProcessLookupError):
+                os.killpg(p.pid, signal.SIGKILL)    # the group: nothing of the cluster is left behind
+            p.wait(timeout=15)
 
 
 @pytest.fixture
