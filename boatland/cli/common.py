@@ -10,19 +10,11 @@ from pathlib import Path
 from boatland.cli.guard import in_range, positive
 from boatland.errors import BoatlandInputError
 
-__all__ = ["DEFAULT_VESSEL", "resolve_db", "scenario_argument", "screening_options", "freq_load", "freq_sea",
+__all__ = ["DEFAULT_VESSEL", "scenario_argument", "screening_options", "freq_load", "freq_sea",
            "freq_check", "freq_setup", "scenario_inputs", "load_guarded", "with_overrides", "check_fits_in_memory",
            "available_memory", "compile_notice", "kernels_cached", "print_json"]
 
 DEFAULT_VESSEL = "ctv27"
-
-
-def resolve_db(spec: str):
-    """A database from a path (any supported format) or a built-in vessel name
-    (:func:`boatland.hydro.load_database`)."""
-    from boatland.hydro import load_database
-
-    return load_database(spec)
 
 
 def scenario_inputs(scenario) -> list[Path]:

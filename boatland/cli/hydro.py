@@ -6,7 +6,7 @@ import argparse
 import json
 from pathlib import Path
 
-from boatland.cli.common import DEFAULT_VESSEL, resolve_db
+from boatland.cli.common import DEFAULT_VESSEL
 from boatland.cli.guard import Output, check_outputs, finite, no_subcommand, positive
 from boatland.errors import BoatlandInputError
 
@@ -113,7 +113,9 @@ def cmd_import(args) -> int:
 def cmd_info(args) -> int:
     from boatland.hydro.info import summary, summary_text
 
-    db = resolve_db(args.database)
+    from boatland.hydro import load_database
+
+    db = load_database(args.database)
     if args.json:
         print(json.dumps(summary(db), indent=2))
     else:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from boatland.cli.common import DEFAULT_VESSEL, resolve_db
+from boatland.cli.common import DEFAULT_VESSEL
 from boatland.cli.guard import Output, check_outputs, in_range, integer, positive, same_file
 from boatland.errors import BoatlandInputError
 
@@ -63,7 +63,9 @@ def cmd(args) -> int:
     check_outputs(outs, [Path(args.database)] if is_file else [])
     if not args.no_store and args.output is None and is_file:     # stored in place: it must be writable
         check_outputs([Output("the database (stored in place)", Path(args.database))])
-    db = resolve_db(args.database)
+    from boatland.hydro import load_database
+
+    db = load_database(args.database)
     if args.dt is not None and args.dt >= args.t_max:
         raise BoatlandInputError(f"--dt {args.dt:g}: must be smaller than --t-max {args.t_max:g} s")
     dt = args.dt if args.dt is not None else default_dt(db.omega[-1])

@@ -2,9 +2,10 @@ r"""One scenario on its vessel, with everything derived from the pair computed o
 
 A trial, the screening, the checks and a campaign all start from the same derived values — the time
 step, the number of steps, the start pose, the fender on the landing in the vessel's axes (with the
-contact dynamics that bound the time step), the wave model adapted to the database, the monopile whose
-scattered wave the vessel feels, the additional damping and the radiation memory's settings.
-:meth:`Setup.of` makes them once; everything downstream reads them from the :class:`Setup`.
+contact dynamics that bound the time step), the wave model adapted to the database and the monopile whose
+scattered wave the vessel feels. :meth:`Setup.of` makes them once; everything downstream reads them from
+the :class:`Setup`, which also gives, when asked, the kernel's contacts, the linear contact law, the
+additional damping and the radiation memory.
 
 The time step rule (when the file gives none) is
 

@@ -108,12 +108,11 @@ class SlipDistance(Incident):
         return first_exceedance(r.t, worst, self.distance) if worst is not None else None
 
     def in_access(self, r, t_access: float) -> float | None:
-        if not r.mode.shape[1]:
+        worst = r.worst_offset
+        if worst is None:
             return None
         t = r.t
         k0 = int(np.searchsorted(t, t_access - 1e-9))
-        off = r.landing_offset()
-        worst = np.where(np.isnan(off), 0.0, off).max(axis=1)
         return first_exceedance(t[k0:], worst[k0:], self.distance) if k0 < t.size else None
 
 

@@ -11,7 +11,7 @@ import numpy as np
 from boatland.atomic import atomic_path
 from boatland.conventions import DOF_NAMES, DOF_UNITS
 from boatland.scenario.parts import Incidents
-from boatland.trial.incidents import trial_incidents
+from boatland.trial.incidents import FirstSlip, trial_incidents
 from boatland.trial.events import (Event, SlipEpisode, all_touching_fraction, column_abs_max, extract_events,
                                    landing_offset, largest_single_slide,
                                    slip_episodes, slip_start_rows, worst_landing_offset)
@@ -226,7 +226,7 @@ class Result(TrialSeries):
             "duration": float(self.t[-1]),
             "slip_events": int(np.count_nonzero(after)),   # = len(self.slip_starts()): each step once
             "contact_slip_events": int(counts[after].sum()),
-            "time_to_first_slip": float(self.t[rows[after][0]]) if after.any() else None,
+            "time_to_first_slip": FirstSlip().first_time(self),
             "max_slip_distance": float(worst.max()) if worst is not None and worst.size else 0.0,
             "max_single_slide": largest_single_slide(self.mode, self.tpos, k0),
             "max_normal_force": None if not touching.any() else float(np.nanmax(fn)),
