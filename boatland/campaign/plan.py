@@ -16,8 +16,9 @@ File format (``scenarios/campaigns/*.toml``)::
     "sea.Hs" = [0.5, 1.0, 1.5]           # are their Cartesian product, in file order
     "sea.relative_direction_deg" = [180.0, 135.0]
 
-    [incidents]                          # incident definitions (seed 002 §3.3, §4.2)
+    [incidents]                          # incident definitions (Grøtting 2015 §3.3, §4.2)
     slip_distance = [0.1]                # [m] from the landing position
+    slide_within = [{distance = 0.5, window = 120.0}]   # [m] slid within [s]
     roll_limit_deg = [10.0]
 
     [store]
@@ -297,7 +298,7 @@ def load_campaign(path: str | Path, *, load_scenario) -> Campaign:
         raise SpecError(str(path), [("scenario", f"the base scenario has problems:\n{exc}")]) from None
     changes: dict[str, Any] = dict(raw_set)
     for key, values in (data.get("incidents") or {}).items():
-        changes[f"incidents.{key}"] = [float(v) for v in np.atleast_1d(values)]
+        changes[f"incidents.{key}"] = list(values)   # numbers or tables, as validated; the scenario checks them again
     base = _apply(scenario, changes, problems, "set")
     axes: dict[str, list] = {}
     for key, values in raw_axes.items():

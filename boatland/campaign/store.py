@@ -62,7 +62,8 @@ ROW_FIELDS = (
     ("exposure", "f8", "[s] time at risk: from the waves' start to the end of the trial"),
     ("time_to_first_slip", "f8", "[s] first stick→slip after the waves start"),
     ("slip_events", "i8", "number of stick→slip events"),
-    ("max_slip_distance", "f8", "[m] largest distance of a fender point from where it landed"),
+    ("max_slip_distance", "f8", "[m] largest distance of a fender point from where it landed, from the first slip on "
+                               "(0: no slip; before it the offset is the rubber's elastic shear)"),
     ("max_single_slide", "f8", "[m] largest single slide"),
     ("max_normal_force", "f8", "[N]"),
     ("min_normal_force", "f8", "[N] smallest normal force while in contact after the settling"),

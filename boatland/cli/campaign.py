@@ -169,6 +169,7 @@ def _isee(args, campaign, store, where, worst_dir) -> int:
     from tqdm import tqdm
 
     from boatland.campaign.isee import run_isee
+    from boatland.freqdomain.statistics import ACCESS_DURATION, DEFAULT_STATISTICS, risk_in_words
     from boatland.campaign.report import write_report
     from boatland.cli.common import compile_notice
     from boatland.checks.files import load, resolve_database
@@ -213,18 +214,22 @@ def _isee(args, campaign, store, where, worst_dir) -> int:
                     "limits": rows(data["isee_limits"]) if "isee_limits" in data else [],
                     "report_files": [str(f) for f in files]})
         return 1 if n_failed and not args.allow_failures else 0
+    stat = DEFAULT_STATISTICS
+    onset = "first slip" if inc == "first slip" else "first incident (slip, contact loss or roll)"
     print(f"wrote {store}: {len(result.rows)} samples in {len(runs)} runs"
           + (f", {n_failed} failed (left out)" if n_failed else ""))
     for r in runs:
         label = r["label"].decode() or "base"
         print(f"  case {r['case']} ({label}) Hs {r['hs']:.4g} m: P({inc}) = {r[f'{inc}: P']:.3g} "
               f"[{r[f'{inc}: P lo']:.3g}, {r[f'{inc}: P hi']:.3g}] (CoV {r[f'{inc}: CoV']:.2g}, {r['samples']} samples); "
-              f"linear {r['linear first slip: P']:.3g}, screening (Rayleigh) {r['screening rayleigh']:.3g}")
+              f"P(first slip): linear {r['linear first slip: P']:.3g}, screening ({stat}) {r['screening ' + stat]:.3g}")
     if "isee_limits" in data:
         for L in data["isee_limits"]:
             print(f"  case {L['case']} ({L['label'].decode() or 'base'}): limiting Hs {L['limiting Hs']:.4g} m "
-                  f"[{L['limiting Hs lo']:.4g}, {L['limiting Hs hi']:.4g}] at P = {L['accept']:g}; linear "
-                  f"{L['linear limiting Hs']:.4g} m, screening (Rayleigh) {L['screening rayleigh Hs']:.4g} m")
+                  f"[{L['limiting Hs lo']:.4g}, {L['limiting Hs hi']:.4g}] for P({inc}) = {L['accept']:g}; onset "
+                  f"limits: the linear model's {onset} {L['linear limiting Hs']:.4g} m, the screening's first slip "
+                  f"({stat}) {L['screening ' + stat + ' Hs']:.4g} m")
+        print(f"  accepted: {risk_in_words(float(data['isee_limits'][0]['accept']), campaign.duration or ACCESS_DURATION)}")
     if worst_dir is not None:
         _save_worst(campaign, data["trials"], worst_dir, args.save_worst, inc)
     if args.report:

@@ -99,6 +99,18 @@ def integer(lo: int | None = None, hi: int | None = None):
 seed = integer(0, SEED_MAX)
 
 
+def accept_arg(text: str) -> float:
+    """Argument type: an accepted probability per access, in (0, 1), or a preset name of Grøtting (2015) Table
+    2.1 (:func:`boatland.freqdomain.statistics.accept_probability`)."""
+    from boatland.errors import BoatlandInputError
+    from boatland.freqdomain.statistics import accept_probability
+
+    try:
+        return accept_probability(text)
+    except BoatlandInputError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+
+
 # ------------------------------------------------------------------------------------ outputs
 @dataclass(frozen=True)
 class Output:

@@ -8,7 +8,7 @@ import sys
 import time
 from pathlib import Path
 
-from boatland.cli.guard import integer, positive, seed
+from boatland.cli.guard import accept_arg, integer, positive, seed
 
 __all__ = ["add_parser", "cmd"]
 
@@ -21,8 +21,12 @@ def add_parser(sub) -> None:
                     "verdict first — the sea state, push and μ it judged, and whether the fender held or slipped "
                     "(when, how far) against the scenario's incident thresholds — then slip events, slip "
                     "distance, forces, motions, incidents and the events after the settling (contacts that "
-                    "change together on one line). Without a file: scenarios/ctv_landing.toml (24 m CTV, "
-                    "JONSWAP Hs 1.5 m, 80 kN).")
+                    "change together on one line) — and, under the verdict, the odds of this sea: the "
+                    "frequency-domain screening's probability per 30-min access of a slip onset (which bounds "
+                    "every slip and slide incident) and of roll beyond each limit, against the accepted risk "
+                    "(--accept). One trial's luck is not the sea's risk. Without a file: "
+                    "scenarios/ctv_landing.toml (the 27 m CTV ctv27 pushing 150 kN in JONSWAP Hs 0.4 m, Tp 7 s, "
+                    "head seas).")
     run.add_argument("scenario", nargs="?", type=Path, help="scenario file (TOML); see 'boatland scenario schema'")
     run.add_argument("--json", action="store_true",
                      help="print the verdict, inputs, summary and events as JSON (values rounded to the model's "
@@ -33,6 +37,9 @@ def add_parser(sub) -> None:
                      help="write the time series, events and summary (netCDF-4/HDF5: xarray.open_dataset opens it "
                           "with named dimensions and units)")
     run.add_argument("--duration", type=positive("s"), help="override simulation.duration [s]")
+    run.add_argument("--accept", type=accept_arg, default="best", metavar="P",
+                     help="accepted probability of an incident per 30-min access, in (0, 1), or a preset of Grøtting "
+                          "(2015) Table 2.1: best (1.19e-3, default), conservative (2e-5), non-conservative (2.681e-2)")
     run.add_argument("--seed", type=seed, help="override simulation.seed (0 … 2**63 − 1). The sea is fixed by the seed, "
                                                "the spectrum and the component keys ([sea] n_components, "
                                                "repeat_period = 600 s, band_tail): a run up to repeat_period long "
@@ -94,10 +101,14 @@ def cmd(args) -> int:
             print(f"warning: {w}", file=sys.stderr)
     if args.output:
         result.to_hdf5(args.output)
+    risk = _sea_risk(scenario, db, setup, args.accept)
     if args.json:
-        print(json.dumps(result.report(args.events), indent=2, default=float, ensure_ascii=False))
+        out = result.report(args.events)
+        out["risk"] = _risk_dict(result, risk)
+        print(json.dumps(out, indent=2, default=float, ensure_ascii=False))
     else:
-        print(result.summary_text(args.events))
+        text = result.summary_text(args.events).split("\n")
+        print("\n".join(text[:1] + _risk_lines(result, risk) + text[1:]))
         if args.output:
             print(f"wrote {args.output}")
         if log_path is not None:
@@ -109,6 +120,69 @@ def cmd(args) -> int:
 
         serve_until_interrupted(live.where)
     return 0
+
+
+def _sea_risk(scenario, db, setup, accept):
+    """The screening's odds of this sea (:func:`boatland.freqdomain.risk.sea_risk`), or the reason there are
+    none (a string: no spectral sea, no landing)."""
+    from boatland.errors import BoatlandInputError
+    from boatland.freqdomain.risk import sea_risk
+
+    try:
+        return sea_risk(scenario, db, setup=setup, accept=accept)
+    except BoatlandInputError as exc:
+        return str(exc).split(": ", 1)[-1]
+
+
+def _incident_risk(risk, d) -> tuple[float | None, str]:
+    """One trial incident definition's probability per access from the screening and how it is meant:
+    ``(p, "estimate" | "upper bound" | "time domain only")``."""
+    if d.screening == "onset":
+        return risk.p_onset, "estimate"
+    if d.screening == "bounded":
+        return risk.p_onset, "upper bound"
+    if d.screening == "roll":
+        return risk.p_roll_above(d.limit_deg), "estimate"
+    return None, "time domain only"
+
+
+def _risk_lines(result, risk) -> list[str]:
+    """Under the verdict: this sea's odds against the accepted risk, then each incident's (text output)."""
+    from boatland.freqdomain.statistics import one_in, probability_text
+
+    if isinstance(risk, str):
+        return [f"  (no odds for this sea: {risk})"]
+    outcome = result.verdict().outcome.upper()
+    lines = [f"  {outcome} this time; " + risk.odds_text(risk.p_onset, "a slip onset"),
+             f"  per {risk.access / 60:g}-min access in this sea (frequency-domain screening, "
+             f"{risk.response.statistics.capitalize()}):"]
+    rows = [("first slip (onset)", risk.p_onset, "estimate")]
+    rows += [(d.name, *_incident_risk(risk, d)) for d in result.incident_definitions]
+    for name, p, how in rows:
+        if p is None:
+            lines.append(f"    {name:29s} time domain only (boatland campaign)")
+            continue
+        value = f"{'≤ ' if how == 'upper bound' else ''}{probability_text(p)} ({one_in(p)})"
+        note = ("  the onset bounds it; a campaign tells how much lower" if how == "upper bound" else
+                f"  {'above' if p > risk.accept else 'within'} the accepted {one_in(risk.accept)}")
+        lines.append(f"    {name:29s} {value:22s}{note}")
+    return lines
+
+
+def _risk_dict(result, risk) -> dict:
+    """``run --json``'s ``risk``: the accepted risk, and this sea's probability per access of each incident."""
+    if isinstance(risk, str):
+        return {"available": False, "reason": risk}
+    out = {"available": True, **risk.as_dict(), "access_s": risk.access,
+           "headline": f"{result.verdict().outcome.upper()} this time; " + risk.odds_text(risk.p_onset, "a slip onset")}
+    incidents = {"first slip": {"p": risk.p_onset, "basis": "estimate", "above_accepted": risk.p_onset > risk.accept}}
+    for d in result.incident_definitions:
+        p, how = _incident_risk(risk, d)
+        incidents[d.name] = {"p": p, "basis": how,
+                             "above_accepted": None if p is None or (how == "upper bound" and p > risk.accept)
+                             else p > risk.accept}   # a bound above the accepted risk decides nothing
+    out["incidents"] = incidents
+    return out
 
 
 def _log_path(args, scenario) -> Path | None:

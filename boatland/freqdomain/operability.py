@@ -32,7 +32,7 @@ import numpy as np
 from boatland.errors import BoatlandInputError, BoatlandWarning
 from boatland.freqdomain.landing import LandingSetup
 from boatland.freqdomain.screening import slip_transfer
-from boatland.freqdomain.statistics import (ACCEPT_PRESETS, ACCESS_DURATION, accept_probability, distinct_events,
+from boatland.freqdomain.statistics import (ACCEPT_PRESETS, ACCESS_DURATION, DEFAULT_STATISTICS, accept_probability, distinct_events,
                                             limiting_hs, response_correlation, spectral_moments)
 from boatland.vessel.database import HydroDB
 from boatland.sea.spectra import SpectrumPart
@@ -184,7 +184,7 @@ class Availability:
 
 
 def availability(db: HydroDB, setup: LandingSetup, scatter: ScatterTable, *, accept=ACCEPT_PRESETS["best"],
-                 statistics: str = "rayleigh", method: str = "improved", sea: SpectrumPart | None = None,
+                 statistics: str = DEFAULT_STATISTICS, method: str = "improved", sea: SpectrumPart | None = None,
                  water_depth: float | None = None, access_duration: float = ACCESS_DURATION,
                  mu: float | None = None, thrust: float | None = None, omega=None) -> Availability:
     r"""Availability of push-on access over ``scatter`` (seed 002 §4.1, Tables 4.2–4.7).

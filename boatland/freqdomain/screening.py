@@ -61,7 +61,7 @@ from boatland.errors import BoatlandInputError
 from boatland.freqdomain.rao import hinged_rao
 from boatland.landing.law import normal_follows
 from boatland.freqdomain.landing import LandingSetup
-from boatland.freqdomain.statistics import (ACCEPT_PRESETS, ACCESS_DURATION, HS_MAX, MODES, STATISTICS, LimitTable,
+from boatland.freqdomain.statistics import (ACCEPT_PRESETS, ACCESS_DURATION, DEFAULT_STATISTICS, HS_MAX, MODES, STATISTICS, LimitTable,
                                             accept_probability, correlation_matrix, distinct_events,
                                             incident_probability, limiting_hs, response_correlation,
                                             spectral_moments)
@@ -191,7 +191,7 @@ def slip_transfer(db: HydroDB, setup: LandingSetup, *, omega=None, beta_deg=None
 
 
 def screening_grid(db: HydroDB, setup: LandingSetup, Tp, beta_deg=None, *, accept=ACCEPT_PRESETS["best"],
-                   statistics: str = "rayleigh", method: str = "improved", sea: SpectrumPart | None = None,
+                   statistics: str = DEFAULT_STATISTICS, method: str = "improved", sea: SpectrumPart | None = None,
                    water_depth: float | None = None, access_duration: float = ACCESS_DURATION, omega=None,
                    mu: float | None = None, thrust: float | None = None) -> LimitTable:
     r"""Limiting-Hs table of a vessel on its landing (Wu 2014; seed 002 §3.2.1, §3.4, Figures 4.1–4.18).
@@ -256,6 +256,11 @@ class SeaResponse:
     cycle_period : float
         Tp of the most energetic part [s].
     statistics, method : str
+    per_mode : ndarray, shape (R,)
+        Each response's per-cycle exceedance probability (Rayleigh) or first-passage rate [1/s] (Rice,
+        Vanmarcke); 0 for a response that is not an event of its own.
+    access_duration : float
+        [s].
     """
 
     sigma: np.ndarray
@@ -267,10 +272,29 @@ class SeaResponse:
     cycle_period: float
     statistics: str
     method: str
+    per_mode: np.ndarray | None = None
+    access_duration: float = ACCESS_DURATION
+
+    def p_slip(self) -> float:
+        """Probability of a slip onset (any contact, any mode) per access, roll left out."""
+        return self._access(self.per_mode[:-1])
+
+    def p_roll_above(self, limit_deg: float) -> float:
+        """Probability of roll beyond ±``limit_deg`` per access, the same statistics (seed 002 eq. 3.37)."""
+        m = self.m[-1:][None, None]
+        _, p, _ = incident_probability(1.0, m, np.array([math.radians(limit_deg)]), [self.cycle_period],
+                                       statistics=self.statistics, access_duration=self.access_duration)
+        return float(p[0, 0])
+
+    def _access(self, per_mode) -> float:
+        if self.statistics == "rayleigh":
+            pc = 1.0 - float(np.prod(1.0 - per_mode))
+            return float(-np.expm1(self.access_duration / self.cycle_period * np.log1p(-min(pc, 1.0))))
+        return float(-np.expm1(-float(np.sum(per_mode)) * self.access_duration))
 
 
 def sea_response(db: HydroDB, setup: LandingSetup, parts, *, water_depth: float | None = None,
-                 statistics: str = "rayleigh", method: str = "improved", access_duration: float = ACCESS_DURATION,
+                 statistics: str = DEFAULT_STATISTICS, method: str = "improved", access_duration: float = ACCESS_DURATION,
                  omega=None, spreading_step_deg: float = 5.0) -> SeaResponse:
     r"""Incident probability of the landing in one sea made of spectral parts (swell + wind sea …).
 
@@ -325,10 +349,11 @@ def sea_response(db: HydroDB, setup: LandingSetup, parts, *, water_depth: float 
     cov = np.einsum("bw,w,wbi,wbj->ij", S, wt, tr.H, tr.H.conj()).real
     keep = distinct_events(m[None, None, :, 0], tr.capacity, correlation_matrix(cov)[None, None])
     Tc = parts[int(np.argmax([p.Hs for p in parts]))].Tp
-    pc, pa, _ = incident_probability(1.0, m[None, None], tr.capacity, [Tc], statistics=statistics,
-                                     access_duration=access_duration, keep=keep)
+    pc, pa, per_mode = incident_probability(1.0, m[None, None], tr.capacity, [Tc], statistics=statistics,
+                                            access_duration=access_duration, keep=keep)
     return SeaResponse(sigma=np.sqrt(m[:, 0]), m=m, capacity=tr.capacity, names=tr.names, p_cycle=float(pc[0, 0]),
-                       p_access=float(pa[0, 0]), cycle_period=float(Tc), statistics=statistics, method=method)
+                       p_access=float(pa[0, 0]), cycle_period=float(Tc), statistics=statistics, method=method,
+                       per_mode=np.asarray(per_mode[0, 0], dtype=float), access_duration=float(access_duration))
 
 
 #: Shear stiffnesses of :func:`shear_sweep` as multiples of the scenario's (and the rigid stick, ``inf``).

@@ -314,17 +314,24 @@ class Incidents:
 
     Attributes
     ----------
-    values : mapping of str to tuple of float
-        ``{"slip_distance": (0.1, 0.3), "roll_limit_deg": (10.0,)}`` — slip distances [m], roll limits [deg].
+    values : mapping of str to tuple
+        ``{"slip_distance": (0.1, 0.3), "roll_limit_deg": (10.0,), "slide_within": ((0.5, 120.0),)}`` — slip
+        distances [m], roll limits [deg]; a key whose entries are tables has a tuple of each table's numbers
+        (``slide_within``: distance [m], window [s]).
     """
 
-    values: Mapping[str, tuple[float, ...]]
+    values: Mapping[str, tuple]
 
     @classmethod
     def from_table(cls, table: Mapping[str, Any]) -> "Incidents":
-        """From the validated table (each value a number or a list of numbers)."""
-        return cls({key: tuple(sorted(set(np.atleast_1d(np.asarray(v, dtype=float)).tolist())))
-                    for key, v in table.items()})
+        """From the validated table (each value a number, a list of numbers or a list of tables)."""
+        out = {}
+        for key, v in table.items():
+            if isinstance(v, (list, tuple)) and v and isinstance(v[0], Mapping):
+                out[key] = tuple(sorted({tuple(float(x) for x in item.values()) for item in v}))
+            else:
+                out[key] = tuple(sorted(set(np.atleast_1d(np.asarray(v, dtype=float)).tolist())))
+        return cls(out)
 
     @property
     def slip_distance(self) -> tuple[float, ...]:

@@ -279,6 +279,11 @@ SCENARIO_SCHEMA = Table({
                                  doc="roll angle limits [deg] (one or several)"),
         "contact_loss_duration": Vector(min_size=1, scalar=True, gt=0.0,
                                         doc="a contact lost for longer than this [s] (one or several; absent: none)"),
+        "slide_within": TableList(Table({
+            "distance": Key(float, required=True, gt=0.0, doc="[m] path the fender slides over the tube"),
+            "window": Key(float, required=True, gt=0.0, doc="[s] within any window of this length"),
+        }), doc="slides of more than `distance` within `window` seconds, e.g. [{distance = 0.5, window = 120.0}] "
+                "(one operator's criterion; absent: none)"),
     }, doc="incident definitions reported by a trial"),
     "output": Table({
         "file": Key(str, doc="time series file to write (HDF5), relative to the working directory"),

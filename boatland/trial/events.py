@@ -30,7 +30,8 @@ import numpy as np
 from boatland.contact.fender import OFF, OPEN, SLIP, STICK
 
 __all__ = ["Event", "SlipEpisode", "SLID_OFF", "extract_events", "slip_episodes", "landing_offset", "track_landing",
-           "worst_landing_offset", "first_exceedance", "slip_start_rows", "first_entry", "largest_single_slide"]
+           "worst_landing_offset", "first_exceedance", "slip_start_rows", "first_entry", "largest_single_slide",
+           "windowed_slide"]
 
 SLID_OFF = "slid off the landing"
 KIND = {(OPEN, STICK): "contact made", (OPEN, SLIP): "contact made", (STICK, OPEN): "contact lost",
@@ -310,6 +311,47 @@ def landing_offset(mode, tpos, k_start: int = 0) -> np.ndarray:
     out = np.empty(mode.shape)
     track_landing(mode, np.ascontiguousarray(tpos, dtype=float), np.full((mode.shape[1], 2), np.nan), out,
                   int(k_start))
+    return out
+
+
+def windowed_slide(t, slide, k_start: int, window: float) -> np.ndarray:
+    r"""The largest distance one contact slid over the tube within the last ``window`` seconds, per row:
+    (n,), 0 before ``k_start``.
+
+    .. math:: W_k = \max_c \sum_{j:\, t_k - T < t_j \le t_k,\; j > k_0} \lVert s_{j,c} \rVert
+
+    with :math:`s_{j,c}` the slide of contact c over the tube in the step that ends at row j (the rubber's
+    anchor of a compliant fender, the contact point of the rigid stick: :attr:`Result.slide`; the elastic
+    shear of a stuck rubber is not a slide and does not count), T the window and :math:`k_0` = ``k_start``
+    (slides in steps ending at or before it do not count). It is the path slid, not the net displacement: a
+    fender that slides 0.3 m down and 0.3 m back up within the window has slid 0.6 m over the tube.
+    Prefix sums and a moving window start: O(n · Nc).
+    """
+    t = np.ascontiguousarray(t, dtype=float)
+    if slide is None or np.asarray(slide).shape[1] == 0:
+        return np.zeros(t.size)
+    return _windowed_slide(t, np.ascontiguousarray(slide, dtype=float), int(max(k_start, 0)), float(window))
+
+
+@numba.njit(cache=True)
+def _windowed_slide(t, slide, k_start, window):  # pragma: no cover - compiled
+    n, nc = slide.shape[0], slide.shape[1]
+    out = np.zeros(n)
+    path = np.zeros(n)                      # the contact's path slid up to each row (from k_start on)
+    for c in range(nc):
+        acc = 0.0
+        for k in range(n):
+            if k > k_start:
+                acc += math.hypot(slide[k, c, 0], slide[k, c, 1])
+            path[k] = acc
+        j = 0
+        for k in range(k_start, n):
+            lo = t[k] - window - 1e-9 * max(1.0, window)
+            while t[j] < lo:                 # first row at or after t_k − T: the window's slides end after it
+                j += 1
+            w = path[k] - path[max(j, k_start)]
+            if w > out[k]:
+                out[k] = w
     return out
 
 

@@ -16,6 +16,9 @@ definition                 scenario / campaign ``[incidents]``  counts
 :class:`FirstSlip`         (always, in campaigns)               the first stick → slip of the fender
 :class:`SlipDistance`      ``slip_distance = [0.1, …]`` [m]     a fender point farther than d from where it
                                                                 landed (Grøtting 2015 §3.3: 10 cm)
+:class:`SlideWithin`       ``slide_within = [{distance = 0.5,   the fender slides more than the distance over
+                           window = 120.0}, …]`` [m, s]         the tube within any window of that length (an
+                                                                operator's criterion: 0.5 m within 2 min)
 :class:`RollAbove`         ``roll_limit_deg = [10.0, …]``       roll beyond the limit (Grøtting 2015 §4.1.2)
 :class:`ContactLoss`       (always, with a fender)              a contact opens, or slides off the landing
 :class:`ContactLossLonger` ``contact_loss_duration = [0.5, …]``  a contact open (or off the landing) for
@@ -43,11 +46,11 @@ from typing import ClassVar
 import numpy as np
 
 from boatland.contact.fender import OFF, OPEN
-from boatland.trial.events import SLID_OFF, first_entry, first_exceedance
+from boatland.trial.events import SLID_OFF, first_entry, first_exceedance, windowed_slide
 
 __all__ = ["FROM_KEY", "ContactLoss", "ContactLossLonger", "FirstSlip", "Incident", "RollAbove", "SlidOff",
-           "SlipDistance",
-           "campaign_incidents", "parse_incident", "trial_incidents"]
+           "SlideWithin",
+           "SlipDistance", "campaign_incidents", "parse_incident", "trial_incidents"]
 
 
 class Incident:
@@ -60,11 +63,21 @@ class Incident:
     key: ClassVar[str | None] = None
     #: Its name, with ``{:g}`` for the parameter (a definition without one: the name itself).
     template: ClassVar[str] = ""
+    #: What the frequency-domain screening says of it: ``"onset"`` (it is the slip onset the screening
+    #: predicts), ``"bounded"`` (it starts with an onset: the onset's probability bounds it from above),
+    #: ``"roll"`` (the screening's roll beyond a limit), None (the time domain only).
+    screening: ClassVar[str | None] = None
 
     @property
     def name(self) -> str:
         fields = list(self.__dict__.values())
         return self.template.format(*fields) if fields else self.template
+
+    @classmethod
+    def from_value(cls, value) -> "Incident":
+        """The definition of one ``[incidents]`` value of :attr:`key`: a number, or a table's numbers in
+        the order of the fields (``(distance, window)``)."""
+        return cls(*value) if isinstance(value, (tuple, list)) else cls(value)
 
     def first_time(self, r) -> float | None:
         """First time [s] of the incident in trial ``r`` after its settling (None: it did not happen)."""
@@ -83,6 +96,7 @@ class FirstSlip(Incident):
     """The first stick → slip of the fender after the settling (any contact, any distance)."""
 
     template: ClassVar[str] = "first slip"
+    screening: ClassVar[str | None] = "onset"
 
     def first_time(self, r) -> float | None:
         rows, _ = r.slip_rows
@@ -97,23 +111,60 @@ class FirstSlip(Incident):
 @dataclass(frozen=True)
 class SlipDistance(Incident):
     """A fender point farther than ``distance`` [m] from where it landed after the settling
-    (:meth:`boatland.trial.result.Result.landing_offset`; Grøtting 2015's incident slip distance)."""
+    (:meth:`boatland.trial.result.Result.landing_offset`; Grøtting 2015's incident slip distance), from the
+    first slip on: before it the fender point's offset is the stuck rubber's elastic shear (a soft rubber
+    pushed sideways deflects by centimetres), which is not a slip."""
 
     distance: float
     key: ClassVar[str] = "slip_distance"
     template: ClassVar[str] = "slip > {:g} m"
+    screening: ClassVar[str | None] = "bounded"
+
+    def _first_from(self, r, k0: int) -> float | None:
+        worst = r.worst_offset
+        rows, _ = r.slip_rows
+        slipped = rows[rows >= r.settle_row]
+        if worst is None or not slipped.size:
+            return None
+        k0 = max(k0, int(slipped[0]))
+        return first_exceedance(r.t[k0:], worst[k0:], self.distance) if k0 < r.t.size else None
 
     def first_time(self, r) -> float | None:
-        worst = r.worst_offset
-        return first_exceedance(r.t, worst, self.distance) if worst is not None else None
+        return self._first_from(r, r.settle_row)
 
     def in_access(self, r, t_access: float) -> float | None:
-        worst = r.worst_offset
-        if worst is None:
+        return self._first_from(r, int(np.searchsorted(r.t, t_access - 1e-9)))
+
+
+@dataclass(frozen=True)
+class SlideWithin(Incident):
+    """The fender slides more than ``distance`` [m] over the tube within ``window`` [s]: one contact's path
+    slid within any window of that length after the settling exceeds the distance
+    (:func:`boatland.trial.events.windowed_slide`: the slide of the rubber's anchor, not its elastic shear
+    while it sticks; back and forth both count).
+
+    The incident operators count: one wind-farm operator's criterion for a slip incident is a slide of
+    more than 0.5 m within 2 minutes (``slide_within = [{distance = 0.5, window = 120.0}]``); Grøtting
+    (2015, §3.3) counts 10 cm from the landing point (:class:`SlipDistance`). The millimetres of elastic
+    shear of a sticking rubber are neither."""
+
+    distance: float
+    window: float
+    key: ClassVar[str] = "slide_within"
+    template: ClassVar[str] = "slide > {:g} m within {:g} s"
+    screening: ClassVar[str | None] = "bounded"
+
+    def _first_from(self, r, k_start: int) -> float | None:
+        if r.slide is None or not r.mode.shape[1] or k_start >= r.t.size:
             return None
-        t = r.t
-        k0 = int(np.searchsorted(t, t_access - 1e-9))
-        return first_exceedance(t[k0:], worst[k0:], self.distance) if k0 < t.size else None
+        return first_exceedance(r.t, windowed_slide(r.t, r.slide, k_start, self.window), self.distance)
+
+    def first_time(self, r) -> float | None:
+        return self._first_from(r, r.settle_row)
+
+    def in_access(self, r, t_access: float) -> float | None:
+        """Slides from ``t_access`` on (the window does not reach back before the access)."""
+        return self._first_from(r, int(np.searchsorted(r.t, t_access - 1e-9)))
 
 
 @dataclass(frozen=True)
@@ -123,6 +174,7 @@ class RollAbove(Incident):
     limit_deg: float
     key: ClassVar[str] = "roll_limit_deg"
     template: ClassVar[str] = "roll > {:g}°"
+    screening: ClassVar[str | None] = "roll"
 
     def first_time(self, r) -> float | None:
         return first_exceedance(r.t, r.x[:, 3], np.radians(self.limit_deg))
@@ -204,7 +256,7 @@ def _entry(r, mode: int, k_start: int) -> float | None:
 
 
 #: ``[incidents]`` key → the definition its values make (one per value).
-FROM_KEY = {cls.key: cls for cls in (SlipDistance, RollAbove, ContactLossLonger)}
+FROM_KEY = {cls.key: cls for cls in (SlipDistance, SlideWithin, RollAbove, ContactLossLonger)}
 
 #: Names of the definitions without a parameter.
 _FIXED = {d.name: d for d in (FirstSlip(), ContactLoss(), SlidOff())}
@@ -220,7 +272,7 @@ def _keyed(incidents: Mapping | object | None) -> list[Incident]:
     if incidents is None:
         return [SlipDistance(0.1)]
     values = incidents if isinstance(incidents, Mapping) else incidents.values
-    return [FROM_KEY[key](v) for key in FROM_KEY for v in values.get(key, ())]
+    return [FROM_KEY[key].from_value(v) for key in FROM_KEY for v in values.get(key, ())]
 
 
 def trial_incidents(incidents, contacts: bool = True) -> tuple[Incident, ...]:
@@ -251,7 +303,7 @@ def parse_incident(name: str) -> Incident:
         m = pattern.fullmatch(name)
         if m:
             try:
-                return cls(float(m.group(1)))
+                return cls(*(float(g) for g in m.groups()))
             except ValueError:
                 break
     raise ValueError(f"{name!r} is not the name of an incident definition")

@@ -210,12 +210,17 @@ class Result(TrialSeries):
         """Figures a user reads first (JSON-able, full precision; :meth:`report` rounds them).
 
         ``slip_events`` counts the fender's slip starts (contacts slipping at the same step once,
-        :meth:`slip_starts`); ``contact_slip_events`` each contact's. The normal forces are those after
+        :meth:`slip_starts`); ``contact_slip_events`` each contact's. ``max_slip_distance`` is the largest
+        distance of a fender point from where it landed from the first slip on (0 without a slip);
+        ``max_shear_deflection`` that distance before the first slip — the stuck rubber's elastic shear, not a
+        slide. The normal forces are those after
         the settling (:attr:`settled_at`; the whole run if it never touched after it)."""
         k0 = self.settle_row
         rows, counts = self.slip_rows
         after = rows >= k0                             # the stick → slip events after the settling
         worst = self.worst_offset
+        # before the first slip the fender point's offset from where it landed is the rubber's elastic shear
+        first = int(rows[after][0]) if after.any() else len(self.t)
         touching = self.mode > 0
         landed = touching[k0:]                         # forces after the settling: not the first touch
         if not landed.any():
@@ -227,7 +232,8 @@ class Result(TrialSeries):
             "slip_events": int(np.count_nonzero(after)),   # = len(self.slip_starts()): each step once
             "contact_slip_events": int(counts[after].sum()),
             "time_to_first_slip": FirstSlip().first_time(self),
-            "max_slip_distance": float(worst.max()) if worst is not None and worst.size else 0.0,
+            "max_slip_distance": float(worst[first:].max()) if worst is not None and first < worst.size else 0.0,
+            "max_shear_deflection": float(worst[k0:first].max()) if worst is not None and first > k0 else 0.0,
             "max_single_slide": largest_single_slide(self.mode, self.tpos, k0),
             "max_normal_force": None if not touching.any() else float(np.nanmax(fn)),
             "min_normal_force_in_contact": None if not touching.any() else float(np.nanmin(fn)),
@@ -250,6 +256,7 @@ class Result(TrialSeries):
 
         s = self.summary()
         units = {"duration": "s", "time_to_first_slip": "s", "max_slip_distance": "m", "max_single_slide": "m",
+                 "max_shear_deflection": "m",
                  "max_normal_force": "N", "min_normal_force_in_contact": "N", "contact_fraction": "1"}
         out = {"verdict": s["verdict"], "inputs": self.inputs}
         out.update({k: rounded(v, units[k]) if k in units else v for k, v in s.items()
@@ -290,7 +297,9 @@ class Result(TrialSeries):
                 + (f"; {s['contact_slip_events']} counting each contact" if s["contact_slip_events"] != s["slip_events"]
                    else ""),
                 f"  max slip distance    {fmt_length(s['max_slip_distance'])} from where it landed "
-                f"(largest single slide {fmt_length(s['max_single_slide'])})",
+                f"(largest single slide {fmt_length(s['max_single_slide'])})" if s["slip_events"] else
+                f"  shear deflection     {fmt_length(s['max_shear_deflection'])} (the rubber's elastic shear while "
+                "it sticks: not a slide)",
                 f"  normal force         (after the settling) max {fmt_force(s['max_normal_force'])}, min in contact "
                 f"{fmt_force(s['min_normal_force_in_contact'])}" if s["max_normal_force"] is not None
                 else "  normal force         never in contact",

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 from boatland.integrate.cummins import OUTCOME_STATUSES
 from boatland.trial.events import SLID_OFF, Event
-from boatland.trial.incidents import ContactLoss, RollAbove, SlipDistance, parse_incident
+from boatland.trial.incidents import ContactLoss, RollAbove, SlideWithin, SlipDistance, parse_incident
 from boatland.scenario.inputs import inputs_text
 
 __all__ = ["Verdict", "verdict", "MergedEvent", "merge_events", "RESOLUTION", "rounded", "fmt_force", "fmt_length",
@@ -165,7 +165,7 @@ class Verdict:
     Attributes
     ----------
     outcome : str
-        ``"held"``, ``"slipped"`` (past the smallest slip-distance threshold), ``"slid off"`` (the landing),
+        ``"held"``, ``"slipped"`` (a slip incident: past a slip-distance threshold, or a slide within a window), ``"slid off"`` (the landing),
         ``"lost contact"``, ``"rolled"`` (past the smallest roll limit, the fender held) or ``"failed"``
         (the integration stopped: NaN or a runaway).
     headline : str
@@ -212,7 +212,7 @@ def verdict(result, summary: dict | None = None) -> Verdict:
         return Verdict("failed", f"FAILED: the integration stopped at {fmt_time(float(result.t[-1]))} "
                                  f"({result.message})", inputs, float(result.t[-1]), inc)
     kinds = {k: parse_incident(k) for k in inc}
-    slip_names = sorted((k for k, d in kinds.items() if isinstance(d, SlipDistance)), key=lambda k: kinds[k].distance)
+    slip_names = [k for k, d in kinds.items() if isinstance(d, (SlipDistance, SlideWithin))]
     roll_names = sorted((k for k, d in kinds.items() if isinstance(d, RollAbove)), key=lambda k: kinds[k].limit_deg)
     loss = ContactLoss().name
     slid = s["max_slip_distance"]
@@ -228,9 +228,9 @@ def verdict(result, summary: dict | None = None) -> Verdict:
         t = inc[SLID_OFF]
         head = f"SLID OFF the landing at {fmt_time(t)} after sliding {fmt_length(slid)}" + also({SLID_OFF})
         return Verdict("slid off", head, inputs, t, inc)
-    crossed = [k for k in slip_names if inc[k] is not None]
+    crossed = sorted((k for k in slip_names if inc[k] is not None), key=lambda k: inc[k])
     if crossed:
-        first = crossed[0]
+        first = crossed[0]                            # the earliest slip incident
         t_cross = inc[first]
         ts = result.t[result.slip_rows[0]]           # the stick → slip events' times
         starts = ts[(ts >= after) & (ts <= t_cross + 1e-9)]
@@ -246,12 +246,15 @@ def verdict(result, summary: dict | None = None) -> Verdict:
         return Verdict("rolled", f"ROLLED past {kinds[rolled[0]].limit_deg:g}° at {fmt_time(t)} (the fender held)" + also({rolled[0]}),
                        inputs, t, inc)
     n = s["slip_events"]
-    limit = f"{kinds[slip_names[0]].distance:g} m" if slip_names else None
+    # the slip incidents it was judged against, by name (the larger slip distances are implied by the smallest)
+    smallest = min((k for k in slip_names if isinstance(kinds[k], SlipDistance)), key=lambda k: kinds[k].distance,
+                   default=None)
+    limit = "; ".join(k for k in slip_names if k == smallest or isinstance(kinds[k], SlideWithin)) or None
     bits = [f"for {exposure:.0f} s of waves" if exposure > 0 else "throughout"]
     if n:
         bits.append(f"{n} short slip{'s' if n != 1 else ''}, never more than {fmt_length(slid)} from where it "
-                    f"landed" + (f" (limit {limit})" if limit else ""))
+                    f"landed" + (f" (incidents: {limit})" if limit else ""))
     elif limit:
-        bits.append(f"no slip (limit {limit})")
+        bits.append(f"no slip (incidents: {limit})")
     others.append(", ".join(bits))
     return Verdict("held", "HELD " + "; ".join(others), inputs, None, inc)
