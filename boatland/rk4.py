@@ -20,7 +20,7 @@ itself is written out in the integrator as ``dt / 6.0 * (k0 + 2 k1 + 2 k2 + k3)`
 :math:`\Delta t \sum_s b_s k_s` (tests/test_rk4.py holds them equal).
 
 Reference: Hairer, E., Nørsett, S. P. & Wanner, G. (1993), *Solving Ordinary Differential Equations I*,
-2nd ed., Springer, §II.1, Table 1.2; seed 000 (DTU) §4.2 for RK4 on the Cummins equation.
+2nd ed., Springer, §II.1, Table 1.2; San Nicolás Méndez 2024 (DTU) §4.2 for RK4 on the Cummins equation.
 """
 
 __all__ = ["A", "B", "C", "A_NEXT", "C_HALF_STEPS", "STAGES"]

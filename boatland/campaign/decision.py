@@ -4,11 +4,16 @@ and how many seeds an interval as narrow as asked would need.
 
 Layout: one *section* per combination of the axes other than Hs, Tp and the wave direction (push,
 μ, ...); in it rows are the swept Hs and columns the combinations of Tp and heading. Each cell holds
-the Monte Carlo estimate k/n with its Clopper–Pearson interval (:mod:`boatland.campaign.stats`), the
-screening's P(slip within the access) (Grøtting 2015 §3.2.1, Wu 2014) and any other estimate the store
-holds for the case (below). Under each column: the limiting Hs where P reaches the target, with the
-interval where the Clopper–Pearson bounds reach it, and "< lowest swept Hs" / "> highest swept Hs"
-where it does not cross inside the sweep.
+the Monte Carlo estimate k/n with its Clopper–Pearson interval (:mod:`boatland.campaign.stats`) and any
+other estimate the store holds for the case (below). Under each column: the limiting Hs where P reaches
+the target, with the interval where the Clopper–Pearson bounds reach it, and "< lowest swept Hs" /
+"> highest swept Hs" where it does not cross inside the sweep.
+
+Like with like. The frequency-domain screening (Grøtting 2015 §3.2.1, Wu 2014) predicts slip *onsets*:
+its P is that of the incident "first slip" (:data:`ONSET`; its count also holds roll beyond the roll
+limit). A cell shows it — "(screening 0.39)" — only in the table of that incident; the table of any
+other incident (a slip distance, contact loss, …) shows time-domain figures only and its legend says why
+(:meth:`Decision.legend`), so no table sets two incidents side by side without naming each.
 
 Other estimators (hook). A method that estimates P(incident) per case another way — e.g. a rare-event
 sampler — stores it in ``/stats`` beside the Monte Carlo columns as ``"<incident>: P (<method>)"``,
@@ -28,11 +33,29 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from boatland.campaign.labels import (DIR_KEYS, HS_KEY, TP_KEYS, axis_label, fixed_text, inputs_from_header,
-                                      value_text)
-from boatland.campaign.stats import LimitingHs, clopper_pearson, limiting_hs_interval, seeds_for_width
+from boatland.campaign.labels import (
+    DIR_KEYS,
+    HS_KEY,
+    TP_KEYS,
+    axis_label,
+    fixed_text,
+    inputs_from_header,
+    value_text,
+)
+from boatland.campaign.stats import (
+    LimitingHs,
+    clopper_pearson,
+    limiting_hs_interval,
+    seeds_for_width,
+)
+from boatland.trial.incidents import FirstSlip
 
-__all__ = ["Cell", "Section", "Decision", "decision", "other_estimates", "DEFAULT_WIDTH"]
+__all__ = ["DEFAULT_WIDTH", "ONSET", "SCREENING_NOTE", "Cell", "Decision", "Section", "decision", "other_estimates"]
+
+#: The incident the frequency-domain screening predicts: the slip onset, "first slip".
+ONSET = FirstSlip().name
+#: Why the table of another incident shows no screening.
+SCREENING_NOTE = f"the frequency-domain screening predicts slip onsets; it is shown beside {ONSET} only"
 
 #: Default width asked of the 95 % interval of P near the target (the seeds advice): ±0.1.
 DEFAULT_WIDTH = 0.2
@@ -61,8 +84,9 @@ def _p(v: float) -> str:
 
 @dataclass(frozen=True)
 class Cell:
-    """One case: k incidents in n completed trials, P = k/n with its interval, the screening's P and
-    other methods' estimates (method → (P, lo, hi))."""
+    """One case: k incidents in n completed trials, P = k/n with its interval, the screening's
+    P(:data:`ONSET` within the access) — whatever incident the table is about — and other methods'
+    estimates of the table's incident (method → (P, lo, hi))."""
 
     case: int
     k: int
@@ -73,13 +97,20 @@ class Cell:
     screening: float
     others: dict = field(default_factory=dict)
 
-    def text(self) -> str:
-        """"0.25 [0.01, 0.81] (screening 0.39)" — the Monte Carlo P with its interval first."""
+    def text(self, *, screening: bool = False) -> str:
+        """"0.25 [0.01, 0.81] (screening 0.39)" — the Monte Carlo P with its interval first.
+
+        Parameters
+        ----------
+        screening : bool
+            Show the screening's P beside it: only in the table of :data:`ONSET`, the incident the
+            screening predicts (:attr:`Decision.screening_beside`).
+        """
         if self.n == 0:
             return "no completed trial"
         out = f"{_p(self.p)} [{_p(self.lo)}, {_p(self.hi)}]"
         extra = []
-        if math.isfinite(self.screening):
+        if screening and math.isfinite(self.screening):
             extra.append(f"screening {_p(self.screening)}")
         for method, (p, lo, hi) in self.others.items():
             if math.isfinite(p):
@@ -87,9 +118,10 @@ class Cell:
         return out + (f" ({'; '.join(extra)})" if extra else "")
 
     def as_dict(self) -> dict:
-        nan = lambda v: None if v is None or not math.isfinite(v) else float(v)   # noqa: E731
+        """JSON-able; the screening's figure keyed by the incident it is of (``screening_P_first_slip``)."""
+        nan = lambda v: None if v is None or not math.isfinite(v) else float(v)
         return {"case": self.case, "incidents": self.k, "trials": self.n, "P": nan(self.p), "P_lo": nan(self.lo),
-                "P_hi": nan(self.hi), "screening_P": nan(self.screening),
+                "P_hi": nan(self.hi), "screening_P_first_slip": nan(self.screening),
                 "other_estimates": {m: {"P": nan(p), "P_lo": nan(lo), "P_hi": nan(hi)}
                                     for m, (p, lo, hi) in self.others.items()}}
 
@@ -133,6 +165,19 @@ class Decision:
     def column_keys(self) -> tuple:
         return self.sections[0].column_keys if self.sections else ()
 
+    @property
+    def screening_beside(self) -> bool:
+        """Whether the cells show the screening's P: only when the table's incident is :data:`ONSET`."""
+        return self.incident == ONSET
+
+    def legend(self) -> str:
+        """What a cell holds, in words, naming the incident of every figure in it."""
+        cell = (f"each cell: Monte Carlo P({self.incident} within the access) [Clopper–Pearson "
+                f"{100 * self.confidence:g} %]")
+        if self.screening_beside:
+            return cell + f" (screening: the frequency-domain screening's P({ONSET} within the access))"
+        return cell + f"; time domain only — {SCREENING_NOTE}"
+
     def heading(self) -> str:
         fixed = fixed_text(self.inputs, self.axes)
         return (f"{self.campaign}: P({self.incident} within the access) [{100 * self.confidence:g} % interval]"
@@ -174,7 +219,8 @@ class Decision:
         body = []
         for r in section.rows:
             first = f"{r:g}" if isinstance(r, float) else str(r)
-            body.append([first] + [section.cells[(r, c)].text() if (r, c) in section.cells else "–"
+            body.append([first] + [section.cells[(r, c)].text(screening=self.screening_beside)
+                                   if (r, c) in section.cells else "–"
                                    for c in section.columns])
         if section.limits:
             body.append([f"limiting Hs at P = {self.target:g}"]
@@ -182,23 +228,24 @@ class Decision:
         if markdown:
             return ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)] + ["| " + " | ".join(b) + " |" for b in body]
         widths = [max(len(row[i]) for row in [head] + body) for i in range(len(head))]
-        fmt = lambda row: "  ".join(v.ljust(w) for v, w in zip(row, widths)).rstrip()   # noqa: E731
+        fmt = lambda row: "  ".join(v.ljust(w) for v, w in zip(row, widths)).rstrip()
         return [fmt(head)] + [fmt(b) for b in body]
 
     def markdown(self) -> str:
-        lines = [f"# {self.heading()}", "", self.axes_text() + "; each cell: Monte Carlo P [Clopper–Pearson "
-                 f"{100 * self.confidence:g} %] (frequency-domain screening P(slip within the access))", ""]
+        lines = [f"# {self.heading()}", "", f"{self.axes_text()}; {self.legend()}", ""]
         for s in self.sections:
             if len(self.sections) > 1:
                 lines += [f"## {s.title()}", ""]
             lines += self.table_lines(s, markdown=True) + [""]
-        lines += [f"Limiting Hs: where P reaches {self.target:g}, linear between the swept Hs; its interval is where "
-                  f"the Clopper–Pearson bounds of P reach it; \"<\" / \">\": it does not cross inside the sweep.", "",
+        lines += [(f"Limiting Hs: where P reaches {self.target:g}, linear between the swept Hs; its interval is where "
+                   f"the Clopper–Pearson bounds of P reach it; \"<\" / \">\": it does not cross inside the sweep."), "",
                   self.advice() + "."]
         return "\n".join(lines) + "\n"
 
     def text(self) -> str:
-        lines = [self.heading(), "  " + self.axes_text() + "; cells: P [interval] (screening)"]
+        cells = f"cells: P({self.incident}) [interval]" + (f" (screening P({ONSET}))" if self.screening_beside
+                                                             else f"; {SCREENING_NOTE}")
+        lines = [self.heading(), f"  {self.axes_text()}; {cells}"]
         for s in self.sections:
             if len(self.sections) > 1:
                 lines.append(f"  {s.title()}:")

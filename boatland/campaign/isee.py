@@ -65,7 +65,7 @@ from scipy.special import ndtri
 from boatland.campaign.plan import Campaign
 from boatland.campaign.executor import Executor, check_scheduler_address
 from boatland.campaign.plan import plan_json
-from boatland.campaign.prepare import check_cases, database_for, memory_key, worker_context
+from boatland.campaign.prepare import case_sensitivity, check_cases, database_for, memory_key, worker_context
 from boatland.campaign.runner import completed, incident_names, summary_row
 from boatland.campaign.store import INCIDENT_PREFIX, CampaignStore
 from boatland.errors import BoatlandInputError
@@ -537,7 +537,8 @@ def run_isee(campaign: Campaign, store_path: str | Path, *, loaders, executor: s
         table = store.table()
         with single_threaded():
             runs, limits = _summaries(campaign, table, levels, refs, curves, names, loaders)
-        store.finish(runs, {"isee_limits": limits} if limits is not None else None)
+        extra = {"sensitivity": case_sensitivity(campaign, loaders)}
+        store.finish(runs, {**extra, "isee_limits": limits} if limits is not None else extra)
     finally:
         store.close()
     return store

@@ -32,7 +32,7 @@ from boatland.trial.simulate import exposure_start
 
 __all__ = ["BackgroundWork", "CaseData", "CasePreparation", "campaign_tables", "check_cases", "database_for",
            "first_trial",
-           "case_screening", "memory_key", "prepare_cases", "start_background", "worker_context"]
+           "case_screening", "case_sensitivity", "memory_key", "prepare_cases", "start_background", "worker_context"]
 
 
 #: Per worker process: the campaign, its databases and radiation memories (:func:`worker_context`).
@@ -279,11 +279,47 @@ def _tables_job(campaign: Campaign, loaders) -> list:
         return campaign_tables(campaign, loaders[1])
 
 
+def case_sensitivity(campaign: Campaign, loaders) -> str:
+    """What moves the limit of the campaign's base landing — the screening's one-at-a-time sensitivity
+    (:func:`boatland.freqdomain.sensitivity.sensitivity`, as ``boatland screen --sensitivity``) at the base's Tp,
+    over the campaign's relative headings (its axis, else 180°, 135°, 90°), at its accepted risk (``[isee]
+    accept`` per its access, else Grøtting 2015's best estimate per 30-min access) — as JSON for the store (``/sensitivity``), or
+    ``{"unavailable": why}`` when the base cannot be screened (no spectral sea, no landing or thrust). Pinned
+    to one BLAS thread, silent."""
+    import json
+
+    from boatland.errors import BoatlandInputError
+    from boatland.freqdomain.landing import LandingSetup
+    from boatland.freqdomain.sensitivity import DEFAULT_HEADINGS, sensitivity
+    from boatland.landing.setup import Setup
+
+    base = campaign.base
+    parts = getattr(getattr(base.sea, "waves", None), "parts", None)
+    if not parts or base.landing is None or base.thrust is None or base.fender is None:
+        return json.dumps({"unavailable": "the base scenario has no spectral sea, landing, fender or thrust"})
+    heads = campaign.axes.get("sea.relative_direction_deg") or DEFAULT_HEADINGS
+    isee = campaign.method == "isee" and campaign.isee.accept is not None    # its accept is per its access
+    accept, access = (campaign.isee.accept, campaign.access or 1800.0) if isee else ("best", 1800.0)
+    with single_threaded(), warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        try:
+            db = loaders[1](base)
+            setup = Setup.of(base, db)
+            study = sensitivity(db, LandingSetup.from_scenario(base, db, setup=setup), parts[0].Tp,
+                                [float(h) for h in heads], accept=accept, sea=parts[0],
+                                water_depth=getattr(setup.waves, "water_depth", None),
+                                access_duration=access)
+        except (BoatlandInputError, ValueError) as exc:
+            return json.dumps({"unavailable": str(exc)})
+    return json.dumps(study.as_dict())
+
+
 class BackgroundWork:
     """What a campaign computes once beside its trials, in a process of its own started before its checks
     (on the core they leave idle): first the ω tables of the pile's scattered wave of every case
     (:func:`campaign_tables`, which the first case's preparation waits for), then the frequency-domain
-    screening (:func:`_screening`, read when the trials are done). Pinned to one BLAS thread like every
+    screening (:func:`_screening`) and the base's sensitivity (:func:`case_sensitivity`), read when the trials
+    are done. Pinned to one BLAS thread like every
     trial, so its values are the ones the campaign's own process would make; if the process cannot give
     them, they are made here."""
 
@@ -291,7 +327,8 @@ class BackgroundWork:
         self.campaign, self.loaders = campaign, loaders
         self.pool = process_pool(1)
         self.futures = (self.pool.submit(_tables_job, campaign, loaders),      # one process: in this order
-                        self.pool.submit(case_screening, campaign, loaders))
+                        self.pool.submit(case_screening, campaign, loaders),
+                        self.pool.submit(case_sensitivity, campaign, loaders))
 
     def tables(self) -> list:
         """The pile's tables of every case (:func:`campaign_tables`)."""
@@ -306,6 +343,13 @@ class BackgroundWork:
             return self.futures[1].result()
         except Exception:  # noqa: BLE001 — e.g. the process died: the campaign's own process computes it
             return case_screening(self.campaign, self.loaders)
+
+    def sensitivity(self) -> str:
+        """What moves the base's limit (:func:`case_sensitivity`), as JSON."""
+        try:
+            return self.futures[2].result()
+        except Exception:  # noqa: BLE001 — e.g. the process died: the campaign's own process computes it
+            return case_sensitivity(self.campaign, self.loaders)
 
     def close(self) -> None:
         """Stop the process now if it is still running (the campaign stopped early)."""

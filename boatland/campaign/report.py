@@ -1,27 +1,35 @@
 """Reports of a campaign store: the decision table, tables (CSV and Markdown) and figures.
 
+- ``report.html``: one self-contained page to decide from — provenance, inputs, the incident and the
+  accepted risk in words, the decision table, the sensitivity (when given) and every figure embedded
+  (:mod:`boatland.campaign.html`);
 - ``decision.md`` / ``decision.csv``: what a planner reads — P(incident within the access) [95 %
-  interval] pivoted by Hs × Tp × heading, the screening beside each cell, the limiting Hs with its
-  interval and the seeds an interval of the asked width needs (:mod:`boatland.campaign.decision`);
+  interval] pivoted by Hs × Tp × heading, the limiting Hs with its interval and the seeds an interval of
+  the asked width needs (:mod:`boatland.campaign.decision`); the frequency-domain screening, which
+  predicts slip onsets, beside the cells of the incident "first slip" only (like with like);
 - ``limiting_hs.csv`` / ``.md``: when ``sea.Hs`` is an axis, the limiting Hs at the target
   probability with its interval per combination of the other axes ("< lowest swept Hs" / "> highest"
   where it does not cross inside the sweep);
 - ``cases.csv`` (every column, for programs) / ``cases.md`` (readable): per case and incident
   definition the count, P with its Clopper–Pearson interval and the mean time to the incident with
-  its χ² interval (:mod:`boatland.campaign.stats`);
-- ``p_vs_hs.png``: P(incident) against Hs with intervals and the screening, one line per Tp × heading;
+  its χ² interval (:mod:`boatland.campaign.stats`), and the screening's P(first slip) named as such;
+- ``p_vs_hs.png``: P(incident) against Hs with intervals, one line per Tp × heading (and the
+  screening's, dashed, when the incident is "first slip");
 - ``limiting_hs_polar.png``: limiting Hs against the heading (bow up, 180° head seas at the top:
   :mod:`boatland.plotstyle`), one line per Tp, its interval shaded;
-- ``time_to_incident.png``: empirical distribution of the time to the first incident per case.
+- ``time_to_incident.png``: empirical distribution of the time to the first incident per case;
+- ``sensitivity_tornado.png``: when a sensitivity study is given (:func:`boatland.campaign.html.sensitivity_items`).
 
 A campaign by importance sampling (``method = "isee"``, :mod:`boatland.campaign.isee`) gets instead:
 
-- ``isee_runs.csv`` / ``.md``: per run (case × Hs level) the estimate of every incident with its CoV and
-  95 % interval, the linear model's first slip (friction circle) and the screening's square, the sampling
-  domain, the bounds (largest elementary probability, Rice), the frequency-domain screening (Rayleigh,
-  Rice, Vanmarcke) and how many time-domain slips the linear model did not have;
+- ``isee_runs.csv`` / ``.md``: per run (case × Hs level) the estimate of the campaign's incident with its
+  CoV and 95 % interval, the linear model's first slip (friction circle) and the screening's square, the
+  sampling domain, the bounds (largest elementary probability, Rice), the frequency-domain screening's
+  P(first slip) (Rayleigh, Rice, Vanmarcke) and how many time-domain slips the linear model did not have —
+  every column headed by the incident it is of;
 - ``isee_limits.csv`` / ``.md`` (with ``accept``): the limiting Hs per case from the time domain with its
-  interval, beside the linear model's and the screening's;
+  interval, beside the linear model's and the screening's, each naming its incident;
+- ``report.html``: the one page, as above, with the per-case limiting Hs and the per-run estimates;
 - ``p_vs_hs.png``: the estimates against Hs; ``limiting_hs_polar.png``: the limiting Hs against the
   heading, time domain (with intervals) and screening, one colour per Tp.
 """
@@ -35,20 +43,46 @@ from pathlib import Path
 
 import numpy as np
 
-from boatland.campaign.decision import DEFAULT_WIDTH, Decision, decision
-from boatland.campaign.labels import DIR_KEYS, HS_KEY, axis_label, fixed_text, value_text
+from boatland.campaign.decision import DEFAULT_WIDTH, ONSET, Decision, decision
+from boatland.campaign.html import (
+    figure_sensitivity,
+    isee_page,
+    monte_carlo_page,
+    sensitivity_items,
+    write_page,
+)
+from boatland.campaign.labels import (
+    DIR_KEYS,
+    HS_KEY,
+    axis_label,
+    fixed_text,
+    inputs_from_header,
+    value_text,
+)
 from boatland.campaign.runner import completed
 from boatland.campaign.store import FORMAT, INCIDENT_PREFIX
 from boatland.errors import BoatlandInputError
+from boatland.freqdomain.statistics import DEFAULT_STATISTICS
 from boatland.trial.incidents import SlipDistance, parse_incident
 
-__all__ = ["read_store", "write_report", "store_decision", "default_incident", "REPORT_FILES",
-           "figure_p_vs_hs", "figure_limiting_polar", "figure_time_to_incident"]
+__all__ = [
+    "REPORT_FILES",
+    "default_incident",
+    "figure_limiting_polar",
+    "figure_p_vs_hs",
+    "figure_time_to_incident",
+    "isee_incident",
+    "isee_linear",
+    "read_store",
+    "store_decision",
+    "store_sensitivity",
+    "write_report",
+]
 
 #: Every file :func:`write_report` may write into its folder.
-REPORT_FILES = ("decision.md", "decision.csv", "cases.csv", "cases.md", "limiting_hs.csv", "limiting_hs.md",
-                "p_vs_hs.png", "limiting_hs_polar.png", "time_to_incident.png", "isee_runs.csv", "isee_runs.md",
-                "isee_limits.csv", "isee_limits.md")
+REPORT_FILES = ("report.html", "decision.md", "decision.csv", "cases.csv", "cases.md", "limiting_hs.csv",
+                "limiting_hs.md", "p_vs_hs.png", "limiting_hs_polar.png", "time_to_incident.png",
+                "sensitivity_tornado.png", "isee_runs.csv", "isee_runs.md", "isee_limits.csv", "isee_limits.md")
 
 TP_KEYS = ("sea.Tp",)
 
@@ -71,6 +105,7 @@ def read_store(path: str | Path) -> dict:
             trials = f["trials"][()]
             stats = f["stats"][()] if "stats" in f else None
             limits = f["isee_limits"][()] if "isee_limits" in f else None
+            sens = f["sensitivity"][()] if "sensitivity" in f else None
     except OSError as exc:
         raise BoatlandInputError(f"{path}: not a readable HDF5 file ({exc})") from None
     if stats is None:
@@ -85,6 +120,8 @@ def read_store(path: str | Path) -> dict:
     out = {"header": header, "trials": trials, "stats": stats, "plan": plan}
     if limits is not None:
         out["isee_limits"] = limits
+    if sens is not None:     # what moves the base's limit (boatland.campaign.prepare.case_sensitivity), JSON
+        out["sensitivity"] = sens.decode() if isinstance(sens, bytes) else str(sens)
     return out
 
 
@@ -110,25 +147,47 @@ def store_decision(store: str | Path, *, incident: str | None = None, target: fl
 
 
 def write_report(store: str | Path, out_dir: str | Path, *, incident: str | None = None,
-                 target: float = 0.1, width: float = DEFAULT_WIDTH, figures: bool = True) -> list[Path]:
-    """Write the decision table, tables and figures of a finished campaign into ``out_dir``; returns
-    the files.
+                 target: float = 0.1, width: float = DEFAULT_WIDTH, figures: bool = True,
+                 sensitivity=None) -> list[Path]:
+    """Write the one page (``report.html``), the decision table, tables and figures of a finished
+    campaign into ``out_dir``; returns the files (``report.html`` last).
 
     Parameters
     ----------
+    store : str or Path
+        A finished campaign store (:func:`read_store`).
+    out_dir : str or Path
+        Folder (made if missing).
     incident : str, optional
         Incident definition of the decision table, limiting Hs and figures (default: the first slip
-        distance definition, else "first slip").
+        distance definition, else "first slip"; a rare-event store: its ``[isee] incident``).
     target : float
-        Accepted probability of the incident within the access, for the limiting Hs.
+        Accepted probability of the incident within the access, for the limiting Hs (a rare-event
+        store has its own, ``[isee] accept``).
     width : float
         Width asked of the 95 % interval of P near the target, for the seeds advice.
+    figures : bool
+        Draw the PNG figures (and embed them in the page).
+    sensitivity : Sensitivity, or sequence of SensitivityItem or dict, optional
+        A sensitivity study to show on the page, as a table and a tornado figure: the result of
+        :func:`boatland.freqdomain.sensitivity.sensitivity`, or rows (:func:`boatland.campaign.html.sensitivity_items`);
+        without one the page says how to get it.
+
+    Returns
+    -------
+    list of Path
     """
     data = read_store(store)
+    if sensitivity is None:
+        sensitivity = store_sensitivity(data, store)
+    rows = sensitivity_items(sensitivity)
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     if data["header"].get("method") == "isee":      # its own incident (the campaign's [isee] incident)
-        return _isee_report(data, out, incident, figures)
+        inc, files = _isee_report(data, out, incident, figures)
+        files += _tornado(sensitivity, rows, out, figures, _campaign_title(data))
+        page = isee_page(data, inc, store=Path(store), figures=_pngs(files), sensitivity=sensitivity)
+        return files + [write_page(page, out / "report.html")]
     incident = _incident(data, incident)
     stats, plan = data["stats"], data["plan"]
     names = data["header"]["incidents"].split("\n")
@@ -141,7 +200,58 @@ def write_report(store: str | Path, out_dir: str | Path, *, incident: str | None
         files += _limiting_tables(dec, out)
     if figures:
         files += _figures(data, dec, out)
-    return files
+    files += _tornado(sensitivity, rows, out, figures, _campaign_title(data))
+    page = monte_carlo_page(data, dec, store=Path(store), figures=_pngs(files), sensitivity=sensitivity)
+    return files + [write_page(page, out / "report.html")]
+
+
+def _pngs(files: list[Path]) -> list[Path]:
+    return [f for f in files if f.suffix == ".png"]
+
+
+def _tornado(sensitivity, rows, out: Path, figures: bool, title: str = "") -> list[Path]:
+    if not rows or not figures:
+        return []
+    from boatland.plotstyle import save_figure
+
+    return [save_figure(figure_sensitivity(sensitivity, title), out / "sensitivity_tornado.png")]
+
+
+def _campaign_title(data: dict) -> str:
+    """"campaign: what moves the limit" and the campaign's fixed inputs (push, μ, seeds …), for a figure."""
+    header, plan = data["header"], data["plan"]
+    fixed = fixed_text(inputs_from_header(header), list(plan["axes"]))
+    seeds = f"{plan['seeds']} seeds per case" if plan.get("seeds") else ""
+    return f"{header.get('campaign', '')}: what moves the limit — " + "; ".join(x for x in (fixed, seeds) if x)
+
+
+def store_sensitivity(data: dict, store="the store"):
+    """What moves the limit of the campaign's base, as the campaign computed it (``/sensitivity``,
+    :func:`boatland.campaign.prepare.case_sensitivity`) — with, for a rare-event store whose incident is not
+    the slip onset, its own limiting Hs per heading as the row of the incident definition (from the
+    screening's onset to the time domain's limit for this incident). None when the store has none."""
+    from boatland.freqdomain.sensitivity import ExtraLimit, Sensitivity
+
+    text = data.get("sensitivity")
+    if not text:
+        return None
+    d = json.loads(text)
+    if "unavailable" in d:
+        return None
+    study = Sensitivity.from_dict(d)
+    lim = data.get("isee_limits")
+    key = "axis: sea.relative_direction_deg"
+    if lim is None or key not in (lim.dtype.names or ()):
+        return study
+    incident = lim["incident"][0].decode()
+    tp_ok = np.ones(len(lim), bool) if "axis: sea.Tp" not in lim.dtype.names else np.isclose(lim["axis: sea.Tp"], study.Tp)
+    found = {float(b): float(h) for b, h, ok in zip(lim[key], lim["limiting Hs"], tp_ok) if ok}
+    if incident == "first slip" or not found:
+        return study
+    name = data["header"].get("campaign", "")
+    return study.with_extra(ExtraLimit(label=f"{incident} (time domain)", limits=found, short=f"ISEE {name}",
+                                       source=f"campaign {name!r} ({Path(str(store)).name}): the time domain's "
+                                              "limiting Hs by importance sampling (isee_limits)"))
 
 
 def _fmt(v) -> str:
@@ -170,17 +280,25 @@ def _write_md(rows: list[list[str]], header: list[str], path: Path, title: str, 
 
 
 def _decision_csv(dec: Decision, path: Path) -> Path:
-    """One row per cell (long form, for spreadsheets)."""
+    """One row per cell (long form, for spreadsheets); every P column names its incident."""
     keys = list(dec.sections[0].fixed) if dec.sections else []
     methods = sorted({m for s in dec.sections for c in s.cells.values() for m in c.others})
     header = [axis_label(k) for k in keys] + [axis_label(HS_KEY)] + [axis_label(k) for k in dec.column_keys]
-    header += ["trials", "incidents", "P", "P lo", "P hi", "screening P(slip)"]
+    inc = dec.incident
+    header += ["trials", f"incidents ({inc})", f"P({inc})", f"P({inc}) lo", f"P({inc}) hi"]
+    # The screening's column only in the table of the incident it predicts (the onset): a column
+    # "screening P(first slip)" in a sheet about "slip > 0.1 m" would still be read, rows away from its
+    # header, as that incident's prediction; cases.csv keeps it for every case, named.
+    screening = dec.screening_beside
+    if screening:
+        header.append(f"screening P({ONSET}) (frequency domain)")
     for m in methods:
-        header += [f"{m}: P", f"{m}: P lo", f"{m}: P hi"]
+        header += [f"{m}: P({inc})", f"{m}: P({inc}) lo", f"{m}: P({inc}) hi"]
     rows = []
     for s in dec.sections:
         for (r, c), cell in sorted(s.cells.items()):
-            row = [*s.fixed.values(), r, *c, cell.n, cell.k, cell.p, cell.lo, cell.hi, cell.screening]
+            row = [*s.fixed.values(), r, *c, cell.n, cell.k, cell.p, cell.lo, cell.hi]
+            row += [cell.screening] if screening else []
             for m in methods:
                 row += list(cell.others.get(m, (math.nan,) * 3))
             rows.append(row)
@@ -196,8 +314,10 @@ def _mean_text(m, lo, hi) -> str:
 
 
 def _cases_tables(stats, names, axes, dec: Decision, out):
-    """``cases.csv`` with every column (raw names, for programs) and a readable ``cases.md``."""
-    header = ["case", "label", "trials", "failed", "screening: P(slip) (frequency domain)", "screening: note"]
+    """``cases.csv`` with every column (raw names, for programs) and a readable ``cases.md``; the
+    screening's P is named by the incident it predicts, first slip (in ``cases.md`` right after the
+    time domain's P(first slip))."""
+    header = ["case", "label", "trials", "failed", f"screening: P({ONSET}) (frequency domain)", "screening: note"]
     header += [axis_label(a) for a in axes]
     for n in names:
         header += [f"{n}: count", f"{n}: P", f"{n}: P lo", f"{n}: P hi", f"{n}: mean time [s]",
@@ -205,24 +325,28 @@ def _cases_tables(stats, names, axes, dec: Decision, out):
     cols = ["case", "label", "trials", "failed", "screening: P(slip)", "screening: note"] + [f"axis: {a}" for a in axes]
     cols += [f"{n}: {k}" for n in names for k in ("count", "P", "P lo", "P hi", "mean time", "mean lo", "mean hi")]
     files = [_write_csv([[r[c] for c in cols] for r in stats], header, out / "cases.csv")]
-    md_head = ["case", *[axis_label(a) for a in axes], "trials"] + [f"P({n})" for n in names] \
-        + [f"mean time to {dec.incident}", "screening P(slip)"]
+    p_head = [f"P({n})" for n in names]
+    at = names.index(ONSET) + 1 if ONSET in names else len(names)     # the screening right after its incident
+    md_head = ["case", *[axis_label(a) for a in axes], "trials", *p_head[:at], f"screening P({ONSET})",
+               *p_head[at:], f"mean time to {dec.incident}"]
     rows = []
     for r in stats:
         ok = int(r["trials"]) - int(r["failed"])
         row = [str(int(r["case"])), *[value_text(a, float(r[f"axis: {a}"]), short=True) for a in axes],
                f"{ok}" + (f" (+{int(r['failed'])} failed)" if r["failed"] else "")]
-        row += [f"{int(r[f'{n}: count'])}/{ok} = {r[f'{n}: P']:.2f} [{r[f'{n}: P lo']:.2f}, {r[f'{n}: P hi']:.2f}]"
-                if ok else "–" for n in names]
+        ps = [f"{int(r[f'{n}: count'])}/{ok} = {r[f'{n}: P']:.2f} [{r[f'{n}: P lo']:.2f}, {r[f'{n}: P hi']:.2f}]"
+              if ok else "–" for n in names]
+        fd = float(r["screening: P(slip)"])
+        row += [*ps[:at], f"{fd:.2f}" if math.isfinite(fd) else (_fmt(r["screening: note"]) or "–"), *ps[at:]]
         i = dec.incident
         row.append(_mean_text(float(r[f"{i}: mean time"]), float(r[f"{i}: mean lo"]), float(r[f"{i}: mean hi"])))
-        fd = float(r["screening: P(slip)"])
-        row.append(f"{fd:.2f}" if math.isfinite(fd) else (_fmt(r["screening: note"]) or "–"))
         rows.append(row)
     files.append(_write_md(rows, md_head, out / "cases.md",
                            f"{dec.campaign}: every case — P(incident within the access) [Clopper–Pearson 95 %], "
                            f"mean time to {dec.incident} [χ² 95 %]",
-                           fixed_text(dec.inputs, axes)))
+                           "; ".join(t for t in (fixed_text(dec.inputs, axes),
+                                                 (f"screening: the frequency-domain screening's P({ONSET} within "
+                                                  "the access) — the slip onset, what it predicts")) if t)))
     return files
 
 
@@ -254,8 +378,9 @@ def _title(dec: Decision, what: str) -> str:
 
 
 def figure_p_vs_hs(dec: Decision):
-    """P(incident within the access) against Hs with Clopper–Pearson intervals (and the screening's P,
-    dashed), one line per section × Tp × heading; returns the Figure."""
+    """P(incident within the access) against Hs with Clopper–Pearson intervals, one line per section × Tp ×
+    heading (and, when the incident is first slip — the onset the screening predicts — the screening's P,
+    dashed); returns the Figure."""
     from boatland.plotstyle import pyplot
 
     plt = pyplot()
@@ -275,13 +400,16 @@ def figure_p_vs_hs(dec: Decision):
             color = f"C{k % 10}"
             ax.errorbar(hs + 0.004 * k, p, yerr=[p - lo, hi - p], marker="o", capsize=3, color=color,
                         label=f"{label}: Monte Carlo" if label else "Monte Carlo")
-            if np.isfinite(fd).any():
+            if dec.screening_beside and np.isfinite(fd).any():
                 ax.plot(hs, fd, ls="--", marker="x", color=color, lw=1,
                         label=f"{label}: screening" if label else "screening (frequency domain)")
             k += 1
     ax.axhline(dec.target, color="0.4", ls=":", lw=1, label=f"target P = {dec.target:g}")
+    what = f"P({dec.incident}) with {100 * dec.confidence:g} % intervals"
+    if not dec.screening_beside:
+        what += f" (time domain; the screening predicts {ONSET} only)"
     ax.set(xlabel="Hs [m]", ylabel=f"P({dec.incident} within the access) [-]", ylim=(-0.02, 1.02),
-           title=_title(dec, f"P({dec.incident}) with {100 * dec.confidence:g} % intervals"))
+           title=_title(dec, what))
     ax.title.set_fontsize(9)
     ax.grid(alpha=0.3)
     fig.legend(fontsize=7, loc="outside lower center", ncol=2)
@@ -387,16 +515,31 @@ def _write_tables(rows: list[list], header: list[str], out: Path, stem: str, tit
 
 
 # ---------------------------------------------------------------------------------------- isee
-def _isee_report(data, out: Path, incident: str | None, figures: bool) -> list[Path]:
-    runs, plan = data["stats"], data["plan"]
+def isee_incident(data: dict, incident: str | None = None) -> str:
+    """The incident a rare-event store's report is about: ``incident``, else the campaign's ``[isee]
+    incident`` (one clear error for a name the store does not hold)."""
     names = data["header"]["incidents"].split("\n")
     settings = json.loads(data["header"].get("isee", "{}"))
-    inc = incident or settings.get("incident", "first slip")
+    inc = incident or settings.get("incident", ONSET)
     if inc not in names:
         raise BoatlandInputError(f"incident {inc!r} is not one of the campaign's: {', '.join(names)}")
-    head = ["case", "label", "Hs [m]", "samples", "failed", f"P({inc})", "CoV", "P lo", "P hi",
-            "linear first slip (circle)", "linear square (screening's margins)", "sampling domain",
-            "largest elementary P", "Rice bound", "screening Rayleigh", "screening Rice", "screening Vanmarcke",
+    return inc
+
+
+def isee_linear(incident: str) -> str:
+    """The linear model's estimate an ISEE limit of ``incident`` is fitted beside (:mod:`boatland.campaign.isee`)."""
+    return "linear first slip" if incident == ONSET else "linear first incident"
+
+
+def _isee_report(data, out: Path, incident: str | None, figures: bool) -> tuple[str, list[Path]]:
+    """The ISEE tables and figures; returns the report's incident and the files. Every column of P names
+    the incident it is of: the campaign's, the linear model's, the screening's (the onset)."""
+    runs, plan = data["stats"], data["plan"]
+    inc = isee_incident(data, incident)
+    head = ["case", "label", "Hs [m]", "samples", "failed", f"P({inc})", f"CoV ({inc})", f"P({inc}) lo",
+            f"P({inc}) hi", "linear P(first slip) (circle)", "linear P(first slip) (square: the screening's margins)",
+            "sampling domain P", "largest elementary P (linear first incident)", "Rice bound (linear first incident)",
+            f"screening P({ONSET}) Rayleigh", f"screening P({ONSET}) Rice", f"screening P({ONSET}) Vanmarcke",
             "TD slips outside the linear slip", "CPU [s]"]
     rows = [[r["case"], r["label"], r["hs"], r["samples"], r["failed"], r[f"{inc}: P"], r[f"{inc}: CoV"],
              r[f"{inc}: P lo"], r[f"{inc}: P hi"], r["linear first slip: P"], r["linear square: P"], r["domain: P"],
@@ -408,8 +551,10 @@ def _isee_report(data, out: Path, incident: str | None, figures: bool) -> list[P
     lim = data.get("isee_limits")
     if lim is not None:
         axes = [a for a in plan["axes"]]
-        head = ["case", "label", *axes, "limiting Hs [m]", "lo", "hi", "linear model [m]", "lo", "hi",
-                "screening Rayleigh [m]", "screening Rice [m]", "screening Vanmarcke [m]", "levels", "samples"]
+        lin = isee_linear(inc)
+        head = ["case", "label", *axes, f"limiting Hs [m] ({inc})", "lo", "hi", f"linear model [m] ({lin})", "lo",
+                "hi", f"screening Rayleigh [m] ({ONSET})", f"screening Rice [m] ({ONSET})",
+                f"screening Vanmarcke [m] ({ONSET})", "levels", "samples"]
         rows = [[L["case"], L["label"], *[L[f"axis: {a}"] for a in axes], L["limiting Hs"], L["limiting Hs lo"],
                  L["limiting Hs hi"], L["linear limiting Hs"], L["linear limiting Hs lo"], L["linear limiting Hs hi"],
                  L["screening rayleigh Hs"], L["screening rice Hs"], L["screening vanmarcke Hs"], L["levels"],
@@ -420,7 +565,7 @@ def _isee_report(data, out: Path, incident: str | None, figures: bool) -> list[P
                                "interval), the linear model, the frequency-domain screening")
     if figures:
         files += _isee_figures(runs, lim, plan, inc, out)
-    return files
+    return inc, files
 
 
 def _isee_figures(runs, lim, plan, inc, out):
@@ -458,7 +603,9 @@ def _isee_figures(runs, lim, plan, inc, out):
             ax.errorbar(th, sel["limiting Hs"], yerr=[np.maximum(sel["limiting Hs"] - sel["limiting Hs lo"], 0),
                                                        np.maximum(sel["limiting Hs hi"] - sel["limiting Hs"], 0)],
                         marker="o", color=colour, capsize=2, label=f"{label}: time domain (ISEE)")
-            ax.plot(th, sel["screening rayleigh Hs"], ls="--", color=colour, lw=1, label=f"{label}: screening")
+            stat = DEFAULT_STATISTICS            # the screening's statistic, as boatland campaign prints it
+            ax.plot(th, sel[f"screening {stat} Hs"], ls="--", color=colour, lw=1,
+                    label=f"{label}: screening ({stat})" if inc == ONSET else f"{label}: screening ({ONSET}, {stat})")
         heading_polar(ax)
         acc = float(lim["accept"][0])
         ax.set_title(f"limiting Hs [m] at P({inc}) = {acc:g} per access\n(heading relative to the bow)", fontsize=9)

@@ -40,8 +40,8 @@ import numpy as np
 from boatland.campaign.executor import Executor, Shared, check_scheduler_address
 from boatland.campaign.labels import campaign_inputs
 from boatland.campaign.plan import Campaign, TrialSpec, plan_json
-from boatland.campaign.prepare import (BackgroundWork, CaseData, CasePreparation, case_screening, check_cases,
-                                       database_for, memory_key, start_background, worker_context)
+from boatland.campaign.prepare import (BackgroundWork, CaseData, CasePreparation, case_screening, case_sensitivity,
+                                       check_cases, database_for, memory_key, start_background, worker_context)
 from boatland.campaign.stats import clopper_pearson, exponential_mean_interval
 from boatland.campaign.store import INCIDENT_PREFIX, CampaignStore
 from boatland.integrate.cummins import OUTCOME_STATUSES
@@ -224,7 +224,9 @@ def run_campaign(campaign: Campaign, store_path: str | Path, *, loaders, executo
                     finally:
                         rows.close()       # an error above cancels the queued trials and stops the workers
             p_fd, why = background.screening() if background is not None else case_screening(campaign, loaders)
-            store.finish(case_statistics(campaign, store.table(), names, screening=p_fd, screening_notes=why))
+            sens = background.sensitivity() if background is not None else case_sensitivity(campaign, loaders)
+            store.finish(case_statistics(campaign, store.table(), names, screening=p_fd, screening_notes=why),
+                         {"sensitivity": sens})
         finally:
             store.close()
     finally:

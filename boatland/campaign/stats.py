@@ -4,8 +4,8 @@ incident, limiting Hs.
 - P(incident within the access) from k incidents in n trials, with the Clopper–Pearson ("exact")
   interval (Clopper & Pearson 1934, *Biometrika* 26(4)):
   :math:`[B(\alpha/2; k, n-k+1),\ B(1-\alpha/2; k+1, n-k)]`, B the beta quantile.
-- Time to first incident: exponential (memoryless, seed 002 §3.3.2 eq. 3.54). With every trial ending
-  in an incident at :math:`t_i`, the :math:`(1-\alpha)` interval of the mean time is seed 002 eq. 3.55
+- Time to first incident: exponential (memoryless, Grøtting 2015 §3.3.2 eq. 3.54). With every trial ending
+  in an incident at :math:`t_i`, the :math:`(1-\alpha)` interval of the mean time is Grøtting 2015 eq. 3.55
   (Ross 2009): :math:`2n\bar t/\chi^2_{1-\alpha/2,\,2n} < \theta < 2n\bar t/\chi^2_{\alpha/2,\,2n}`
   (χ²_p the p-quantile). Trials that end without an incident are *censored* at the access duration:
   the estimate is then :math:`\hat\theta = T/r` with T the total time at risk and r the incidents,
@@ -73,7 +73,7 @@ def exponential_mean_interval(times, exposure, confidence: float = 0.95) -> tupl
         return math.nan, math.nan, math.nan
     T = float(np.sum(np.where(hit, t, exposure)))
     a = 1.0 - confidence
-    if r == t.size:  # every trial ended in an incident: seed 002 eq. 3.55
+    if r == t.size:  # every trial ended in an incident: Grøtting 2015 eq. 3.55
         return T / r, 2 * T / chi2_ppf(1 - a / 2, 2 * r), 2 * T / chi2_ppf(a / 2, 2 * r)
     lower = 2 * T / chi2_ppf(1 - a / 2, 2 * r + 2)
     if r == 0:

@@ -229,7 +229,7 @@ def _isee(args, campaign, store, where, worst_dir) -> int:
                   f"[{L['limiting Hs lo']:.4g}, {L['limiting Hs hi']:.4g}] for P({inc}) = {L['accept']:g}; onset "
                   f"limits: the linear model's {onset} {L['linear limiting Hs']:.4g} m, the screening's first slip "
                   f"({stat}) {L['screening ' + stat + ' Hs']:.4g} m")
-        print(f"  accepted: {risk_in_words(float(data['isee_limits'][0]['accept']), campaign.duration or ACCESS_DURATION)}")
+        print(f"  accepted: {risk_in_words(float(data['isee_limits'][0]['accept']), campaign.access or ACCESS_DURATION)}")
     if worst_dir is not None:
         _save_worst(campaign, data["trials"], worst_dir, args.save_worst, inc)
     if args.report:

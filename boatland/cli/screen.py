@@ -5,11 +5,18 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from boatland.reproducible import pinned
-from boatland.cli.common import (freq_check, freq_directions, freq_load, freq_sea, freq_setup, scenario_argument,
-                                  screening_options)
+from boatland.cli.common import (
+    freq_check,
+    freq_directions,
+    freq_load,
+    freq_sea,
+    freq_setup,
+    scenario_argument,
+    screening_options,
+)
 from boatland.cli.guard import Output, integer, positive
 from boatland.errors import BoatlandInputError
+from boatland.reproducible import pinned
 
 __all__ = ["add_parser", "cmd"]
 
@@ -26,14 +33,29 @@ def add_parser(sub) -> None:
                     "180° head seas at the top, waves from starboard on the right, as in 'boatland report').")
     scenario_argument(screen)
     screening_options(screen)
-    screen.add_argument("--tp", type=positive("s", 1e4), nargs=3, metavar=("MIN", "MAX", "N"), default=[3.0, 18.0, 16],
-                        help="peak periods: N from MIN to MAX [s] (default 3 18 16)")
-    screen.add_argument("--directions", type=integer(1, 3600), default=8, metavar="N",
-                        help="N relative directions over 360° (default 8: every 45°)")
+    screen.add_argument("--tp", type=positive("s", 1e4), nargs="+", metavar="S",
+                        help="peak periods: MIN MAX N, N from MIN to MAX [s] (default 3 18 16); with --sensitivity "
+                             "one period TP (default the scenario's Tp, else 7)")
+    screen.add_argument("--directions", type=integer(1, 3600), metavar="N",
+                        help="N relative directions over 360° (default 8: every 45°; with --sensitivity head 180°, "
+                             "bow-quartering 135° and beam 90°)")
     screen.add_argument("--shear-sweep", type=positive("s", 1e4), metavar="TP",
                         help="instead of the table over Tp: the limiting Hs at peak period TP against the fender's "
                              "shear stiffness (0.1× … 100× the scenario's, and rigid), per direction; -o draws it")
-    screen.add_argument("-o", "--output", type=Path, metavar="PNG", help="write a polar figure of the limiting Hs")
+    screen.add_argument("--sensitivity", action="store_true",
+                        help="instead of the table over Tp: what moves the limit — the limiting Hs at one Tp with one "
+                             "input at a time at the ends of a sourced range (accepted risk, push, μ_s, the fender's "
+                             "shear stiffness and height) and all of them at once, per heading; -o draws tornadoes")
+    screen.add_argument("--factors", metavar="LIST",
+                        help="with --sensitivity: which inputs to vary, comma-separated, of "
+                             "accept,thrust,mu,shear,height (or risk, push, friction, k_t, z; default all)")
+    screen.add_argument("--limits", type=Path, metavar="STORE",
+                        help="with --sensitivity: a finished ISEE campaign store whose limiting Hs per case (its "
+                             "incident definition, the time domain) joins the table as a row, at the same Tp and "
+                             "relative headings")
+    screen.add_argument("-o", "--output", type=Path, metavar="PNG",
+                        help="write a figure: the polar map of the limiting Hs (with --shear-sweep its curves, with "
+                             "--sensitivity its tornadoes)")
     screen.set_defaults(func=cmd)
 
 
@@ -44,8 +66,20 @@ def cmd(args) -> int:
     from boatland.freqdomain import screening_grid
 
     freq_check(args)
+    if args.sensitivity:
+        return _sensitivity(args)
+    for flag, value in (("--factors", args.factors), ("--limits", args.limits)):
+        if value is not None:
+            raise BoatlandInputError(f"{flag}: only with --sensitivity")
     scenario, db = freq_load(args.scenario, [Output("-o", args.output, "figure")])
     setup = freq_setup(args, scenario, db)
+    if args.tp is None:
+        args.tp = [3.0, 18.0, 16]
+    if args.directions is None:
+        args.directions = 8
+    if len(args.tp) != 3:
+        raise BoatlandInputError(f"--tp {' '.join(f'{t:g}' for t in args.tp)}: give MIN MAX N (one period only with "
+                                 "--sensitivity)")
     lo, hi, n = args.tp
     if not (0 < lo <= hi and n >= 1 and n == int(n)):
         raise BoatlandInputError(f"--tp {lo:g} {hi:g} {n:g}: need 0 < MIN ≤ MAX and a whole N ≥ 1")
@@ -155,3 +189,120 @@ def _shear_sweep(args, scenario, db, setup, beta, sea, depth) -> int:
         if not args.json:
             print(f"wrote {args.output}")
     return 0
+
+
+def _sensitivity(args) -> int:
+    """``screen --sensitivity``: the limiting Hs at one Tp, one input at a time
+    (:func:`boatland.freqdomain.sensitivity.sensitivity`); text, --json, -o tornadoes."""
+    import sys
+    import time
+
+    import numpy as np
+
+    from boatland.cli.common import load_guarded, print_json
+    from boatland.freqdomain.sensitivity import (
+        DEFAULT_HEADINGS,
+        factors_named,
+        plot_tornado,
+        sensitivity,
+    )
+    from boatland.freqdomain.statistics import access_text
+
+    if args.shear_sweep is not None:
+        raise BoatlandInputError("--sensitivity and --shear-sweep: choose one")
+    factors = None
+    if args.factors is not None:
+        factors = [f for f in args.factors.split(",") if f.strip()]
+        try:
+            factors_named(factors)
+        except BoatlandInputError as exc:
+            raise BoatlandInputError(f"--factors {args.factors}: {exc}") from None
+    tp = args.tp
+    if tp is not None and not (len(tp) == 1 or (len(tp) == 3 and tp[0] == tp[1] and tp[2] == 1)):
+        raise BoatlandInputError(f"--tp {' '.join(f'{t:g}' for t in tp)}: --sensitivity takes one peak period "
+                                 "(--tp TP)")
+    scenario, db, warns, _ = load_guarded(args.scenario, [Output("-o", args.output, "figure")],
+                                          extra_inputs=[args.limits] if args.limits else ())
+    for w in warns:
+        print(f"warning: {w}", file=sys.stderr)
+    setup = freq_setup(args, scenario, db)
+    sea, _ = freq_sea(scenario)
+    Tp = float(tp[0]) if tp is not None else (float(sea.Tp) if sea is not None else 7.0)
+    if args.directions is None:
+        beta, key = np.array(DEFAULT_HEADINGS), "headings 180°, 135°, 90°"
+    else:
+        beta = np.arange(args.directions) * 360.0 / args.directions
+        key = f"--directions {args.directions} (every {360.0 / args.directions:g}°)"
+    freq_directions(scenario, db, beta, key)
+    extra = [_store_limits(args.limits, Tp, beta, args.accept, setup, args)] if args.limits else []
+    start, shown = time.monotonic(), [0.0]
+
+    def progress(done, total):
+        t = time.monotonic() - start
+        if t > 2.0 and t - shown[0] > 2.0 and done < total:
+            shown[0] = t
+            print(f"sensitivity: {done} of {total} screenings ({t:.0f} s)", file=sys.stderr, flush=True)
+
+    result = sensitivity(db, setup, Tp, beta, factors=factors, accept=args.accept, statistics=args.statistics,
+                         method=args.method, sea=sea, water_depth=scenario.sea.water_depth if scenario.sea else None,
+                         access_duration=args.access, mu=args.mu, thrust=args.thrust, extra_rows=extra,
+                         progress=progress)
+    for note in result.notes:
+        print(f"warning: {note}", file=sys.stderr)
+    if args.json:
+        print_json({"scenario": scenario.name, "database": db.name, **result.as_dict()})
+    else:
+        print(f"{scenario.name}: limiting Hs [m] at Tp {Tp:g} s, one input at a time at the ends of its range "
+              f"(base: {result.base_text}; per {access_text(args.access)}, {result.statistics}, {result.method} hinge); "
+              "per heading: the limit at the low – high end (× the base)")
+        print(result.text())
+    if args.output:
+        plot_tornado(result, args.output, title=f"{scenario.name} ({db.name}, {_sea_shape(scenario)}): limiting Hs "
+                                                f"at Tp {Tp:g} s, one input at a time")
+        if not args.json:
+            print(f"wrote {args.output}")
+    return 0
+
+
+def _store_limits(path, Tp, beta, accept, setup, args):
+    """The time domain's limiting Hs per heading at ``Tp`` from an ISEE campaign store's ``isee_limits``
+    (:func:`boatland.campaign.report.read_store`) as an :class:`~boatland.freqdomain.sensitivity.ExtraLimit`."""
+    import math
+    import sys
+
+    from boatland.campaign.report import read_store
+    from boatland.freqdomain import accept_probability
+    from boatland.freqdomain.sensitivity import ExtraLimit
+
+    try:
+        data = read_store(path)
+    except BoatlandInputError as exc:
+        raise BoatlandInputError(f"--limits {exc}") from None
+    lim = data.get("isee_limits")
+    if lim is None or lim.size == 0:
+        raise BoatlandInputError(f"--limits {path}: no limiting Hs in this store (an ISEE campaign with an accept "
+                                 "in its [isee] table writes them)")
+    p = accept_probability(accept)
+    if not math.isclose(float(lim["accept"][0]), p, rel_tol=1e-6):
+        raise BoatlandInputError(f"--limits {path}: its limits are at P = {lim['accept'][0]:g} per access, the "
+                                 f"screening's at {p:g}; give --accept {lim['accept'][0]:g}")
+    fixed = json.loads(data["header"].get("inputs") or "{}")
+
+    def value(row, key):                         # an axis of the campaign, else what it held fixed
+        col = f"axis: {key}"
+        return float(row[col]) if col in lim.dtype.names else fixed.get(key.split(".")[-1])
+    found = {}
+    for row in lim:
+        tp, b = value(row, "sea.Tp"), value(row, "sea.relative_direction_deg")
+        if tp is not None and b is not None and math.isclose(tp, Tp, rel_tol=1e-6):
+            found.update({float(x): float(row["limiting Hs"]) for x in beta if abs((b - x + 180) % 360 - 180) < 1e-6})
+    if not found:
+        raise BoatlandInputError(f"--limits {path}: no case at Tp {Tp:g} s and relative heading "
+                                 f"{', '.join(f'{x:g}°' for x in beta)} in its isee_limits")
+    push, mu = args.thrust or setup.thrust, args.mu or setup.mu
+    if fixed.get("thrust") not in (None, push) or fixed.get("mu_s") not in (None, mu):
+        print(f"warning: --limits {path}: its campaign ran push {fixed.get('thrust', 0) / 1e3:g} kN, μ_s "
+              f"{fixed.get('mu_s')}, the screening's base {push / 1e3:g} kN, μ_s {mu:g}", file=sys.stderr)
+    name = data["plan"].get("name", "")
+    return ExtraLimit(label=f"{lim['incident'][0].decode()} (time domain)", limits=found, short=f"ISEE {name}",
+                      source=f"campaign {name!r} ({path}): the time domain's limiting Hs by ISEE, its isee_limits")

@@ -1,5 +1,5 @@
 """Frequency-domain services: RAOs of the free vessel and of the vessel hinged at its fender point,
-Wu (2014) slip screening (seed 002 §3.2.1, §3.4: slip margins, Rayleigh / Rice statistics, limiting
+Wu (2014) slip screening (Grøtting 2015 §3.2.1, §3.4: slip margins, Rayleigh / Rice statistics, limiting
 Hs) and operability over a scatter diagram.
 
 Service layer (DESIGN.md §3): built on the vessel (:mod:`boatland.vessel`) and the scenario on it

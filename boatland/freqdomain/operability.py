@@ -1,5 +1,5 @@
 r"""Operability: availability of push-on access over a wave scatter diagram or hindcast table
-(seed 002 §3.2.1 last paragraph, §4.1 Tables 4.2–4.7; seed 004 downtime analysis).
+(Grøtting 2015 §3.2.1 last paragraph, §4.1 Tables 4.2–4.7; Naaijen 2012 downtime analysis).
 
 A sea state i (Hs_i, Tp_i, direction θ_i, occurrence p_i) is *workable* when its Hs does not exceed the
 limiting Hs of the screening (:mod:`boatland.freqdomain.screening`) at its own peak period and relative
@@ -187,7 +187,7 @@ def availability(db: HydroDB, setup: LandingSetup, scatter: ScatterTable, *, acc
                  statistics: str = DEFAULT_STATISTICS, method: str = "improved", sea: SpectrumPart | None = None,
                  water_depth: float | None = None, access_duration: float = ACCESS_DURATION,
                  mu: float | None = None, thrust: float | None = None, omega=None) -> Availability:
-    r"""Availability of push-on access over ``scatter`` (seed 002 §4.1, Tables 4.2–4.7).
+    r"""Availability of push-on access over ``scatter`` (Grøtting 2015 §4.1, Tables 4.2–4.7).
 
     :math:`A = \sum_i p_i [H_{s,i} \le H_{s,lim}(T_{p,i}, \theta_i - \psi)]`, the limit from
     :func:`~boatland.freqdomain.statistics.limiting_hs` at each distinct (Tp, β) of the table.

@@ -1,9 +1,9 @@
-"""Free RAOs with and without the monopile's scattered wave (seed 000 §5.1, Figs. 5.4–5.12).
+"""Free RAOs with and without the monopile's scattered wave (San Nicolás Méndez 2024 §5.1, Figs. 5.4–5.12).
 
 Near the turbine the vessel does not feel the open sea: :func:`rao_with_pile` adds the Froude–Krylov
 force of the pile's scattered wave (:func:`boatland.sea.pile.pile_scattered_excitation`)
-to the database's excitation and solves the free RAO (seed 000 eq. 3.31) both ways. The vessel's own
-scattering of the pile's wave is neglected, as in seed 000.
+to the database's excitation and solves the free RAO (San Nicolás Méndez 2024 eq. 3.31) both ways. The vessel's own
+scattering of the pile's wave is neglected, as in San Nicolás Méndez 2024.
 """
 
 from __future__ import annotations
@@ -14,7 +14,7 @@ from boatland.sea.pile import pile_scattered_excitation
 
 __all__ = ["rao_with_pile", "COMPARE_HEADINGS"]
 
-#: Relative wave directions of seed 000's comparison [deg] (0 = following, 180 = head seas).
+#: Relative wave directions of San Nicolás Méndez 2024's comparison [deg] (0 = following, 180 = head seas).
 COMPARE_HEADINGS = (0.0, 45.0, 90.0, 135.0, 180.0)
 
 

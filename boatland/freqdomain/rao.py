@@ -1,12 +1,12 @@
 r"""Response amplitude operators of the free vessel and of the vessel hinged at its fender point.
 
-Free vessel (seed 000 eq. 3.29–3.31):
+Free vessel (San Nicolás Méndez 2024 eq. 3.29–3.31):
 
 .. math::
     Z(\omega)\,\hat x = X(\omega, \beta), \qquad
     Z(\omega) = -\omega^2\left(M + A(\omega)\right) + i\omega\left(B(\omega) + B_{add}\right) + C .
 
-Vessel on its landing — "hinged" at body points :math:`r_c` (seed 002 §3.2.1, eq. 3.1–3.12, after Wu
+Vessel on its landing — "hinged" at body points :math:`r_c` (Grøtting 2015 §3.2.1, eq. 3.1–3.12, after Wu
 2014: the translation of each point is zero, the rotations are free), or held there by the fender's
 springs (the compliant rubber of :mod:`boatland.contact.fender`; the general linear restraint is
 :class:`boatland.landing.law.ContactLaw`). With the 3 × 6 map of the motions to the
@@ -24,7 +24,7 @@ motions and reactions solve the augmented (saddle-point) system
     \begin{bmatrix} \hat x \\ \hat J \end{bmatrix} =
     \begin{bmatrix} X \\ 0 \end{bmatrix},
 
-which is eq. 3.10–3.12 of seed 002 written without eliminating the translations (eq. 3.9): the same
+which is eq. 3.10–3.12 of Grøtting 2015 written without eliminating the translations (eq. 3.9): the same
 solution, and it takes several points and the generalisation below without new algebra.
 
 Generalisation: a spring–damper normal. A point may be pinned only in the two tangential directions
@@ -45,7 +45,7 @@ the rigid hinge. This is the frequency-domain image of the stuck fender of the t
 spring–damper normal, tangential stick).
 
 Preload. Under a thrust the time domain oscillates about a preloaded equilibrium in which the thrust
-follows the vessel's x axis (seed 002 §3.4, eq. 3.62–3.63) and the static contact forces turn their
+follows the vessel's x axis (Grøtting 2015 §3.4, eq. 3.62–3.63) and the static contact forces turn their
 moments with the vessel. Given the thrust, :func:`hinged_rao` finds that equilibrium and adds its
 stiffness (:math:`Z \to Z - K_g`, :func:`preload_stiffness`). For ctv24 under 80 kN, leaving it out
 puts the vertical reaction up to 3 % and 1.7° off the time domain; with it they agree within 0.05 %
@@ -182,7 +182,7 @@ def impedance(db: HydroDB, omega, additional_damping=None) -> np.ndarray:
 
 
 def free_rao(db: HydroDB, omega, beta_deg=None, *, additional_damping=None) -> np.ndarray:
-    r"""RAO of the freely floating vessel (seed 000 eq. 3.31).
+    r"""RAO of the freely floating vessel (San Nicolás Méndez 2024 eq. 3.31).
 
     .. math:: \hat x(\omega, \beta) = \left[-\omega^2 (M + A(\omega)) + i\omega (B(\omega) + B_{add})
               + C\right]^{-1} X(\omega, \beta)

@@ -194,7 +194,7 @@ def screening_grid(db: HydroDB, setup: LandingSetup, Tp, beta_deg=None, *, accep
                    statistics: str = DEFAULT_STATISTICS, method: str = "improved", sea: SpectrumPart | None = None,
                    water_depth: float | None = None, access_duration: float = ACCESS_DURATION, omega=None,
                    mu: float | None = None, thrust: float | None = None) -> LimitTable:
-    r"""Limiting-Hs table of a vessel on its landing (Wu 2014; seed 002 §3.2.1, §3.4, Figures 4.1–4.18).
+    r"""Limiting-Hs table of a vessel on its landing (Wu 2014; Grøtting 2015 §3.2.1, §3.4, Figures 4.1–4.18).
 
     :func:`slip_transfer` → :func:`spectral_moments` → :func:`limiting_hs`.
 
@@ -207,7 +207,7 @@ def screening_grid(db: HydroDB, setup: LandingSetup, Tp, beta_deg=None, *, accep
     beta_deg : array_like, shape (Nβ,), optional
         Relative wave directions [deg] (default 0, 45, …, 315).
     accept : float or str
-        Accepted probability per access (or a seed 002 Table 2.1 preset name).
+        Accepted probability per access (or a Grøtting 2015 Table 2.1 preset name).
     statistics : {"rayleigh", "rice", "vanmarcke"}
     method : {"improved", "wu"}
     sea : SpectrumPart, optional
@@ -240,7 +240,7 @@ def screening_grid(db: HydroDB, setup: LandingSetup, Tp, beta_deg=None, *, accep
 # --------------------------------------------------------------------------------------- one given sea
 @dataclass(frozen=True, eq=False)
 class SeaResponse:
-    r"""Slip margins and roll in one given sea (a sum of wave systems; seed 002 eq. 3.41–3.45).
+    r"""Slip margins and roll in one given sea (a sum of wave systems; Grøtting 2015 eq. 3.41–3.45).
 
     Attributes
     ----------
@@ -280,7 +280,7 @@ class SeaResponse:
         return self._access(self.per_mode[:-1])
 
     def p_roll_above(self, limit_deg: float) -> float:
-        """Probability of roll beyond ±``limit_deg`` per access, the same statistics (seed 002 eq. 3.37)."""
+        """Probability of roll beyond ±``limit_deg`` per access, the same statistics (Grøtting 2015 eq. 3.37)."""
         m = self.m[-1:][None, None]
         _, p, _ = incident_probability(1.0, m, np.array([math.radians(limit_deg)]), [self.cycle_period],
                                        statistics=self.statistics, access_duration=self.access_duration)

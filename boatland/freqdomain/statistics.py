@@ -9,8 +9,8 @@ the limiting Hs solves a 1-D monotone equation.
 
 Statistics (``statistics``):
 
-``"rayleigh"`` (seed 002): per wave cycle (one per Tp) the peak of each margin exceeds its capacity with
-  probability :math:`e^{-a_m^2/2\sigma_m^2}` (eq. 3.36; the seed's sign typo corrected), the roll
+``"rayleigh"`` (Grøtting 2015): per wave cycle (one per Tp) the peak of each margin exceeds its capacity with
+  probability :math:`e^{-a_m^2/2\sigma_m^2}` (eq. 3.36; the thesis's sign typo corrected), the roll
   amplitude its limit with :math:`e^{-\theta_{max}^2/2\sigma_\phi^2}` (eq. 3.37); incident per cycle
   :math:`P_{inc} = 1 - \prod(1 - P_i)` (eq. 3.40 / 3.80); acceptable per cycle
   :math:`P_{facc}T_p/t_{acc}` (eq. 3.38).
@@ -101,9 +101,11 @@ def access_text(access: float = ACCESS_DURATION) -> str:
 
 def risk_in_words(accept, access: float = ACCESS_DURATION) -> str:
     """The accepted risk as a planner reads it: ``"1 access in 840 (1.19e-3 per 30-min access, Grøtting 2015
-    best estimate)"`` — for a preset name or a number (a number equal to a preset is named as it)."""
+    best estimate)"`` — for a preset name or a number (a number equal to a preset is named as it, for a
+    30-min access: Grøtting's figures are per 30-min access)."""
     p = accept_probability(accept)
-    source = next((ACCEPT_SOURCES[k] for k, v in ACCEPT_PRESETS.items() if v == p), None)
+    source = next((ACCEPT_SOURCES[k] for k, v in ACCEPT_PRESETS.items() if v == p), None) \
+        if access == ACCESS_DURATION else None                 # Grøtting's figures are per 30-min access
     odds = one_in(p).replace("1 in", "1 access in")
     return f"{odds} ({probability_text(p)} per {access_text(access)}" + (f", {source})" if source else ", as given)")
 
@@ -267,7 +269,7 @@ def distinct_events(m0: np.ndarray, capacity: np.ndarray, correlation: np.ndarra
 
 def rayleigh_exceedance(a, sigma) -> np.ndarray:
     r"""Probability that the peak of one cycle of a zero-mean narrow-band Gaussian process with standard
-    deviation σ exceeds a (seed 002 eq. 3.36–3.37): :math:`P = e^{-a^2/2\sigma^2}`, 1 for a ≤ 0."""
+    deviation σ exceeds a (Grøtting 2015 eq. 3.36–3.37): :math:`P = e^{-a^2/2\sigma^2}`, 1 for a ≤ 0."""
     a = np.asarray(a, dtype=float)
     sigma = np.asarray(sigma, dtype=float)
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -314,7 +316,7 @@ def incident_probability(Hs, m: np.ndarray, capacity: np.ndarray, Tp, *, statist
                          access_duration: float = ACCESS_DURATION, keep=None) -> tuple[np.ndarray, np.ndarray]:
     r"""Probability of an incident (any slip mode or roll) per wave cycle and per access.
 
-    ``"rayleigh"`` — seed 002 eq. 3.80 per cycle of Tp, :math:`P_{cyc} = 1-\prod_i(1-e^{-a_i^2/2\sigma_i^2})`;
+    ``"rayleigh"`` — Grøtting 2015 eq. 3.80 per cycle of Tp, :math:`P_{cyc} = 1-\prod_i(1-e^{-a_i^2/2\sigma_i^2})`;
     per access :math:`1-(1-P_{cyc})^{t_{acc}/T_p}`. ``"rice"`` / ``"vanmarcke"`` — per access
     :math:`1-\exp(-t_{acc}\sum_i\nu_i)` (roll counted at ±θ_max); per cycle the same with
     :math:`t_{acc} = T_p`.
@@ -411,7 +413,7 @@ def limiting_hs(m: np.ndarray, capacity: np.ndarray, Tp, beta_deg, *, accept=ACC
                 captured=None, names=None, keep=None) -> LimitTable:
     r"""Limiting Hs per (Tp, β): the largest Hs whose incident probability is accepted.
 
-    ``"rayleigh"``: :math:`P_{inc}(H_s) \le P_{facc}\,T_p/t_{acc}` (seed 002 eq. 3.38–3.40, 3.80);
+    ``"rayleigh"``: :math:`P_{inc}(H_s) \le P_{facc}\,T_p/t_{acc}` (Grøtting 2015 eq. 3.38–3.40, 3.80);
     ``"rice"``/``"vanmarcke"``: :math:`1 - \exp(-t_{acc}\sum\nu_i(H_s)) \le P_{facc}`. Both sides are
     monotone in Hs (every σ ∝ Hs), so a vectorised bisection in log Hs over all cells at once
     (60 halvings of [1 mm, 30 m]: relative precision 1e-16).

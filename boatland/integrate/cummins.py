@@ -5,9 +5,9 @@ r"""Fixed-step RK4 of the Cummins equation with radiation memory by convolution 
         = F_{exc}(t) + F_T(t, x) + F_c(t, x, \dot x), \qquad
     \mu(t) = \int_0^t K(t-\tau)\,\dot x(\tau)\,d\tau
 
-(Cummins 1962; seed 000 eq. 3.40 and §4.2 for RK4 with the trapezoid convolution).
+(Cummins 1962; San Nicolás Méndez 2024 eq. 3.40 and §4.2 for RK4 with the trapezoid convolution).
 
-Stage consistency of the memory (seed 000 §4.2; DESIGN.md §1): at the RK4 stage time
+Stage consistency of the memory (San Nicolás Méndez 2024 §4.2; DESIGN.md §1): at the RK4 stage time
 :math:`t_n + c\,\Delta t` (c = 0, ½, 1) the integral is split into a history part over
 :math:`[0, t_n]` — trapezoid over the stored step velocities, fixed during the step — and the current
 interval :math:`[t_n, t_n + c\Delta t]`, trapezoid with the stage velocity:

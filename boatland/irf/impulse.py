@@ -1,6 +1,6 @@
 r"""Radiation impulse-response functions K(t), infinite-frequency added mass, and their consistency.
 
-Cummins (1962); seed 000 §3.4 eq. 3.37–3.42:
+Cummins (1962); San Nicolás Méndez 2024 §3.4 eq. 3.37–3.42:
 
 .. math::
     K_{ij}(t) = \frac{2}{\pi}\int_0^\infty B_{ij}(\omega)\cos\omega t\,d\omega, \qquad

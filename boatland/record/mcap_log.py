@@ -37,10 +37,10 @@ from boatland.record.scene import Scene, scene_from_trial, scene_metadata
 from boatland.record.schemas import LOG_FORMAT, LOG_LEVEL, RAD2DEG, TOPICS, file_descriptor_set, \
     message_class
 from boatland.trial.events import track_landing
-from boatland.trial.incidents import RollAbove, SlipDistance, trial_incidents
+from boatland.trial.incidents import IncidentWatch
 
 __all__ = ["McapLog", "PROFILE", "LIBRARY", "METADATA_NAME", "SUMMARY_NAME", "columns_from_block", "block_values",
-           "step_events", "end_event", "IncidentWatch"]
+           "step_events", "end_event"]
 
 PROFILE = ""                      # protobuf messages, no ROS profile
 LIBRARY = f"boatland {__version__}"
@@ -297,7 +297,7 @@ class McapLog:
         nc = np.asarray(info.contacts[0]).reshape(-1, 3).shape[0]
         self._anchor = np.full((nc, 2), np.nan)      # landing positions carried across blocks
         self._eta = BowElevation(info)               # the sea at the bow, summed block by block
-        self._incidents = IncidentWatch(info.scenario)
+        self._incidents = IncidentWatch(info.scenario.incidents, settle_row(info))
         self._scene: Scene = scene_from_trial(info.setup, info.contacts, waves=False)
         self._log_cls = message_class("foxglove.Log")
         self._layout = _Layout(nc)
@@ -319,7 +319,7 @@ class McapLog:
 
     def steps(self, block) -> None:
         slip = np.empty(block.mode.shape)
-        worst = track_landing(block.mode, block.tpos, self._anchor, slip, max(0, settle_row(self.info) - block.k0))
+        track_landing(block.mode, block.tpos, self._anchor, slip, max(0, settle_row(self.info) - block.k0))
         t_ns = np.rint(np.asarray(block.t) * NS).astype(np.int64) + self.epoch
         arrows = arrow_values_compiled(self._scene, block.x, block.fn, block.ft, block.mode)
         rows = self._layout.encode(t_ns, block, slip, self._eta(block.k0, block.k1), self.info.start_pose, arrows)
@@ -329,8 +329,8 @@ class McapLog:
             for cid, a, b in self._spans:
                 add(cid, t, buf[base + a:base + b], t, seq + i)
         self._seq += len(t_ns)
-        if block.events or self._incidents.may_fire(worst, block.x):
-            self._events(step_events(block, block.t, block.x, slip, self._incidents))
+        if block.events or self._incidents.pending:
+            self._events(step_events(block, slip, self._incidents))
         self._writer.flush()
 
     def finish(self, result) -> None:
@@ -374,10 +374,11 @@ def run_metadata(info) -> dict:
             "scene": json.dumps(scene_metadata(sc, info.contacts))}
 
 
-def step_events(block, t, x, slip, incidents: "IncidentWatch") -> list[tuple[int, str, str]]:
-    """Events of a block as ``(t_ns, level, text)``: contact events, then first incidents."""
+def step_events(block, slip, incidents: IncidentWatch) -> list[tuple[int, str, str]]:
+    """Events of a block as ``(t_ns, level, text)``: contact events, then first incidents (``slip``: the
+    block's landing offsets)."""
     events = [(round(e.t * NS), "WARNING" if e.kind == "stick→slip" else "INFO", e.text()) for e in block.events]
-    return events + [(round(ti * NS), "WARNING", text) for ti, text in incidents(t, x, slip)]
+    return events + [(round(ti * NS), "WARNING", text) for ti, text in incidents(block, slip)]
 
 
 def end_event(result) -> tuple[int, str, str]:
@@ -385,42 +386,3 @@ def end_event(result) -> tuple[int, str, str]:
     t_end = float(result.t[-1]) if len(result.t) else 0.0
     return round(t_end * NS), "INFO" if result.status == 0 else "ERROR", f"run {result.message} at t = {t_end:.2f} s"
 
-
-class IncidentWatch:
-    """First exceedances of the scenario's incident definitions, found block by block (slip distance over
-    a threshold, roll over a limit; contact loss is already a contact event)."""
-
-    def __init__(self, scenario):
-        defs = trial_incidents(scenario.incidents)
-        self.slip = [d.distance for d in defs if isinstance(d, SlipDistance)]
-        self.roll = [d.limit_deg for d in defs if isinstance(d, RollAbove)]
-        self.slip_names = {d.distance: d.name for d in defs if isinstance(d, SlipDistance)}
-        self.roll_names = {d.limit_deg: d.name for d in defs if isinstance(d, RollAbove)}
-        self.done: set = set()
-
-    def may_fire(self, worst_slip: float, x: np.ndarray) -> bool:
-        """Cheap pre-check: could a pending incident be in this block (largest slip, motions)?"""
-        pending_slip = [lim for lim in self.slip if self.slip_names[lim] not in self.done]
-        if pending_slip and worst_slip > min(pending_slip):
-            return True
-        pending_roll = [lim for lim in self.roll if self.roll_names[lim] not in self.done]
-        return bool(pending_roll) and np.degrees(np.abs(x[:, 3]).max()) > min(pending_roll)
-
-    def __call__(self, t, x, slip) -> list[tuple[float, str]]:
-        out = []
-        if len(self.done) == len(self.slip) + len(self.roll):
-            return out
-        if slip.shape[1] and len(self.done) < len(self.slip):
-            worst = np.fmax.reduce(slip, axis=1)          # NaN (not landed) only where all are NaN
-            for lim in self.slip:
-                key = self.slip_names[lim]
-                if key not in self.done and (k := np.nonzero(worst > lim)[0]).size:
-                    self.done.add(key)
-                    out.append((float(t[k[0]]), f"incident: {key} at t = {t[k[0]]:.2f} s"))
-        roll_max = np.degrees(np.abs(x[:, 3]).max()) if self.roll else 0.0
-        for lim in self.roll:
-            key = self.roll_names[lim]
-            if roll_max > lim and key not in self.done and (k := np.nonzero(np.abs(x[:, 3]) > np.radians(lim))[0]).size:
-                self.done.add(key)
-                out.append((float(t[k[0]]), f"incident: {key} at t = {t[k[0]]:.2f} s"))
-        return out

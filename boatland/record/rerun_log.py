@@ -26,7 +26,8 @@ import numpy as np
 
 from boatland.errors import BoatlandInputError
 from boatland.record.columns import BowElevation, Columns, LandingTracker, settle_row
-from boatland.record.mcap_log import IncidentWatch, columns_from_block, end_event, step_events
+from boatland.record.mcap_log import columns_from_block, end_event, step_events
+from boatland.trial.incidents import IncidentWatch
 from boatland.record.scene import COLORS, FENDER_RADIUS, FORCE_SCALE, MODE_COLORS, PATCH_DT, PILE_BOTTOM, PILE_TOP, \
     Scene, fender_forces, scene_from_trial
 
@@ -399,14 +400,15 @@ class RerunLog:
                                                       quiet=self.quiet, bind=self.bind, port=self.port, scene=scene)
         self.view = RerunView(self.rec, scene, nc)
         self.view.static()
-        self._tracker, self._incidents = LandingTracker(nc, settle_row(info)), IncidentWatch(info.scenario)
+        self._tracker = LandingTracker(nc, settle_row(info))
+        self._incidents = IncidentWatch(info.scenario.incidents, settle_row(info))
         self._eta = BowElevation(info)
         self._buf, self._events = [], []
 
     def steps(self, block) -> None:
         c = columns_from_block(block, self.info, self._tracker, self._eta(block.k0, block.k1))
         self._buf.append(Columns(**{k: np.array(v) for k, v in vars(c).items()}))
-        self._events += step_events(block, c.t, c.x, c.slip, self._incidents)
+        self._events += step_events(block, c.slip, self._incidents)
         if self._buf[-1].t[-1] - self._buf[0].t[0] >= FLUSH_EVERY:
             self._send()
 

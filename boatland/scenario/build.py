@@ -37,7 +37,7 @@ FENDER_DEFAULTS = {"k_v": 0.0, "v_ref": 0.2, "delta": 1.5, "shear_stiffness": SH
                    "shear_damping_ratio": SHEAR_DAMPING_RATIO_DEFAULT, "width": 0.0}
 _FENDER_KEYS = ("stiffness", "damping", "mu_s", "mu_k", "k_v", "v_ref", "delta", "shear_stiffness",
                 "shear_damping", "shear_damping_ratio", "width")
-#: Seed 001 §2.5.1: the Stribeck exponent δ lies in [0.5, 2.0].
+#: Ferreira González (2023) §2.5.1: the Stribeck exponent δ lies in [0.5, 2.0].
 DELTA_USUAL = (0.5, 2.0)
 #: Variance fraction above the "shortest significant period" of a spectrum (dt ≤ that period / 20).
 SIGNIFICANT_TAIL = 0.01
@@ -175,11 +175,11 @@ def fender(ctx: Context) -> Fender | None:
     if values["mu_k"] > values["mu_s"]:
         key = "fender.mu_k" if "mu_k" in raw else "fender.mu_s"
         ctx.add(key, f"μ_k = {values['mu_k']:g} exceeds μ_s = {values['mu_s']:g}: kinetic friction is at most "
-                     "static friction (seed 001 eq. 2.76)")
+                     "static friction (Ferreira González 2023 eq. 2.76)")
         return None
     if not DELTA_USUAL[0] <= values["delta"] <= DELTA_USUAL[1]:
         ctx.notes.append(f"fender.delta = {values['delta']:g} is outside the range {DELTA_USUAL[0]}–{DELTA_USUAL[1]} "
-                         "of seed 001 §2.5.1")
+                         "of Ferreira González 2023 §2.5.1")
     kt = values["shear_stiffness"]
     return Fender(points=tuple(tuple(p) for p in d["points"]), sideways=d["sideways"], preset=preset,
                   shear_stiffness=math.inf if kt == "rigid" else float(kt),

@@ -182,11 +182,11 @@ class Landing:
 
 @dataclass(frozen=True, kw_only=True)
 class Fender:
-    r"""The bow fender: contact points and the contact law (seed 001 §2.5, §3.4).
+    r"""The bow fender: contact points and the contact law (Ferreira González 2023 §2.5, §3.4).
 
     Normal force per contact :math:`f_n = c_f\,\Delta x + d_f\,\Delta\dot x \ge 0`; friction
     coefficient :math:`\mu(v) = \mu_k + (\mu_s - \mu_k)\,e^{-(|v|/v_{ref})^\delta} + k_v |v|`
-    (Stribeck, seed 001 eq. 2.78), :math:`\mu_s` while stuck.
+    (Stribeck, Ferreira González 2023 eq. 2.78), :math:`\mu_s` while stuck.
 
     Tangentially the rubber shears while it sticks (stiffness k_t, damping c_t per contact) and slides
     once its force reaches μ f_n (:mod:`boatland.contact.fender`); ``shear_stiffness = inf`` is the

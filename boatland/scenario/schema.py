@@ -30,8 +30,8 @@ DT_MAX = 0.05
 MEMORY_DEFAULT = 75.0
 #: Default thrust ramp [s].
 THRUST_RAMP_DEFAULT = 10.0
-#: Default incident thresholds: slip 0.1 m (seed 002 §3.3: "slip defined as 10 cm deviation"),
-#: roll 10° (the middle of the 5/10/15° limits of seed 002 §4.1.2).
+#: Default incident thresholds: slip 0.1 m (Grøtting 2015 §3.3: "slip defined as 10 cm deviation"),
+#: roll 10° (the middle of the 5/10/15° limits of Grøtting 2015 §4.1.2).
 SLIP_DISTANCE_DEFAULT = (0.1,)
 ROLL_LIMIT_DEFAULT = (10.0,)
 
@@ -225,7 +225,7 @@ SCENARIO_SCHEMA = Table({
         "mu_k": Key(float, gt=0.0, le=2.0, doc="kinetic friction coefficient μ_k (≤ μ_s)"),
         "k_v": Key(float, ge=0.0, doc="Stribeck viscous constant k_v [s/m] (default 0)"),
         "v_ref": Key(float, gt=0.0, doc="Stribeck reference velocity v_ref [m/s] (default 0.2)"),
-        "delta": Key(float, gt=0.0, doc="Stribeck exponent δ (default 1.5; seed 001: 0.5–2)"),
+        "delta": Key(float, gt=0.0, doc="Stribeck exponent δ (default 1.5; Ferreira González 2023: 0.5–2)"),
         "sideways": Key(bool, default=True, doc="friction also horizontally along the contact plane"),
     }, optional=True, json_extra=_fender_json_rules(),
         doc="bow fender contact (absent: free floating); "
@@ -255,7 +255,7 @@ SCENARIO_SCHEMA = Table({
         "column": Key(int, ge=1, doc="measured: 0-based column of the elevation (default 1)"),
         "time_rtol": Key(float, gt=0.0, doc="measured: allowed relative deviation of a time step (default 0.01)"),
         "gauge_position": Vector(size=2, names=("x", "y"), doc="measured: global gauge position [m] (default origin)"),
-        "n_keep": Key(int, ge=1, doc="measured: keep the N largest components (seed 001: 20; default all)"),
+        "n_keep": Key(int, ge=1, doc="measured: keep the N largest components (Ferreira González 2023: 20; default all)"),
         "remove_mean": Key(bool, doc="measured: drop the record's mean (default true)"),
         "water_depth": Key((float, str), gt=0.0, choices=("inf",),
                            doc="site water depth [m] or \"inf\"; default the database's"),

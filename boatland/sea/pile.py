@@ -1,9 +1,9 @@
-r"""Excitation of the vessel by the wave the monopile scatters (seed 000 §3.1, §4.1; issue 9).
+r"""Excitation of the vessel by the wave the monopile scatters (San Nicolás Méndez 2024 §3.1, §4.1; issue 9).
 
 Near the turbine the vessel does not feel the open sea: the monopile reflects and bends the waves.
 The scattered wave of a bottom-mounted pile of radius :math:`a` (MacCamy & Fuchs 1954,
 :mod:`boatland.waves.diffraction`) adds the Froude–Krylov force of its pressure, integrated over the
-wetted hull panels with the pressure at each panel centroid (seed 000 eq. 3.21–3.22, 4.5):
+wetted hull panels with the pressure at each panel centroid (San Nicolás Méndez 2024 eq. 3.21–3.22, 4.5):
 
 .. math::
     X^s_j(\omega, \beta) = -\,e^{\,i k (x_0\cos\theta + y_0\sin\theta)}
@@ -11,7 +11,7 @@ wetted hull panels with the pressure at each panel centroid (seed 000 eq. 3.21�
 
 with :math:`\mathbf n = (n, (\mathbf r - \mathbf r_{ref}) \times n)` the generalised normal of
 panel q in the body frame, pointing out of the hull into the water (:class:`~boatland.vessel.database.HullMesh`;
-hence the minus sign: the water pushes the hull along −n — seed 000 writes eq. 3.22 with the normal
+hence the minus sign: the water pushes the hull along −n — San Nicolás Méndez 2024 writes eq. 3.22 with the normal
 into the body), :math:`\mathbf x_q` the panel centroid in the global frame for the vessel's mean
 reference-point position :math:`(x_0, y_0)` and heading :math:`\psi` relative to the pile axis, θ the
 global direction of travel, β the database's direction relative to the vessel. The exponential refers
@@ -25,7 +25,7 @@ phase :math:`e^{-ik(x_0\cos\theta + y_0\sin\theta)}` again, :mod:`boatland.waves
 
 Assumptions
     Linear, potential flow. **The vessel's own scattering (diffraction) of the pile's wave is
-    neglected**, as in seed 000: the scattered wave acts through its undisturbed (Froude–Krylov)
+    neglected**, as in San Nicolás Méndez 2024: the scattered wave acts through its undisturbed (Froude–Krylov)
     pressure only, and the pile's re-scattering of the vessel's radiated and diffracted waves is
     neglected too. X^s holds for one mean position and heading; it is recomputed when they change.
 """
@@ -137,7 +137,7 @@ def pile_scattered_excitation(db: HydroDB, position, heading_deg: float, pile_ra
     r"""Froude–Krylov force of the monopile's scattered wave on the hull, X^s (module docstring).
 
     The pile stands at the global origin. The vessel's own scattering of the pile's wave is
-    neglected, as in seed 000 (§3.1 eq. 3.21–3.22, §4.1 eq. 4.5). Because X^s is referred to the
+    neglected, as in San Nicolás Méndez 2024 (§3.1 eq. 3.21–3.22, §4.1 eq. 4.5). Because X^s is referred to the
     incident elevation at the reference point, it depends only on the layout relative to the pile:
     for a pile at (x_p, y_p), pass ``position`` = (x0 − x_p, y0 − y_p).
 
@@ -199,7 +199,7 @@ def pile_scattered_components(db: HydroDB, position, heading_deg: float, pile_ra
     ``X(ω_i, θ_i − ψ)``). Near the pile X^s turns fast with ω and β (its phase follows the incident
     phase at the pile relative to the reference point, k·|x_ref − x_pile|·Δcos): on a 5°, 0.04 rad/s
     grid the phase steps are 0.2–0.6 rad for ω = 1–3 rad/s, too coarse for bilinear interpolation
-    to be exact. The vessel's own scattering of the pile's wave is neglected, as in seed 000.
+    to be exact. The vessel's own scattering of the pile's wave is neglected, as in San Nicolás Méndez 2024.
 
     Parameters
     ----------

@@ -1,4 +1,4 @@
-"""Reading users' wave records: a CSV time series of elevation at a gauge (seed 001 §5.2.3).
+"""Reading users' wave records: a CSV time series of elevation at a gauge (Ferreira González 2023 §5.2.3).
 
 CSV format
     Two columns, time [s] and elevation [m] (or more, choosing the elevation column); comma,

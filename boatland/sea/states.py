@@ -7,7 +7,7 @@ Three kinds of waves, one interface — ``realise(seed, duration) -> Components`
   TMA, each with its own mean direction and cos-2s spreading — swell plus wind sea, Grøtting 2015
   §4.2.3), realised with a seed (random-frequency rule of :mod:`boatland.waves.realisation`);
 - :class:`RegularWave`: one Airy wave (H, T, direction, phase);
-- :class:`MeasuredRecord`: a gauge record replayed through its FFT (seed 001 §5.2.3).
+- :class:`MeasuredRecord`: a gauge record replayed through its FFT (Ferreira González 2023 §5.2.3).
 
 The excitation of these waves on a vessel is assembled here too (:func:`wave_excitation`: the
 database's X on the RK4 half-step grid, the pile's scattered wave added).
@@ -343,7 +343,7 @@ class RegularWave(WaveModel):
 
 @dataclass(frozen=True, kw_only=True, eq=False)
 class MeasuredRecord(WaveModel):
-    r"""A wave gauge record replayed through its FFT (seed 001 §5.2.3; :mod:`boatland.waves.measured`).
+    r"""A wave gauge record replayed through its FFT (Ferreira González 2023 §5.2.3; :mod:`boatland.waves.measured`).
 
     Usually made with :meth:`from_csv`. Simulation time 0 is the first sample; the replay repeats
     with the record length (:meth:`realise` warns when the duration exceeds it).
@@ -359,7 +359,7 @@ class MeasuredRecord(WaveModel):
     direction_deg : float
         Direction the recorded (long-crested) waves travel towards, global frame [deg].
     n_components : int or None
-        Keep the N largest components (seed 001 kept 20), or all (None, default: exact replay).
+        Keep the N largest components (Ferreira González 2023 kept 20), or all (None, default: exact replay).
     remove_mean : bool
         Drop the record's mean (a water level, not a wave); default True.
     water_depth, g : float
@@ -523,10 +523,10 @@ def wave_excitation(components: Components, db: HydroDB, *, dt: float, n_steps: 
         Half-cosine start-up ramp [s] (0 = none).
     pile : Pile, optional
         A bottom-mounted monopile (:class:`boatland.sea.pile.Pile`): the Froude–Krylov force of its scattered wave (MacCamy–Fuchs) on the
-        hull panels is added at every component (seed 000 eq. 3.21–3.22, 4.5) — from a cached ω table
+        hull panels is added at every component (San Nicolás Méndez 2024 eq. 3.21–3.22, 4.5) — from a cached ω table
         for long-crested seas (:func:`boatland.sea.pile.pile_scattered_interpolated`),
         else exactly (:func:`~boatland.sea.pile.pile_scattered_components`). The vessel's
-        own scattering of the pile's wave is neglected, as in seed 000.
+        own scattering of the pile's wave is neglected, as in San Nicolás Méndez 2024.
 
     Returns
     -------

@@ -45,10 +45,10 @@ from typing import ClassVar
 
 import numpy as np
 
-from boatland.contact.fender import OFF, OPEN
+from boatland.contact.fender import OFF, OPEN, SLIP, STICK
 from boatland.trial.events import SLID_OFF, first_entry, first_exceedance, windowed_slide
 
-__all__ = ["FROM_KEY", "ContactLoss", "ContactLossLonger", "FirstSlip", "Incident", "RollAbove", "SlidOff",
+__all__ = ["FROM_KEY", "IncidentWatch", "ContactLoss", "ContactLossLonger", "FirstSlip", "Incident", "RollAbove", "SlidOff",
            "SlideWithin",
            "SlipDistance", "campaign_incidents", "parse_incident", "trial_incidents"]
 
@@ -307,3 +307,91 @@ def parse_incident(name: str) -> Incident:
             except ValueError:
                 break
     raise ValueError(f"{name!r} is not the name of an incident definition")
+
+
+class IncidentWatch:
+    """The first time of each incident definition a trial reports, found as the trial runs, block by block
+    (what a run log writes the moment it happens): slip distance (from the first slip on), slide within a
+    window, roll; contact loss and sliding off are contact events already. The times equal
+    :meth:`boatland.trial.result.Result.incident_times` of the finished trial.
+
+    Parameters
+    ----------
+    incidents : Incidents or None
+        The scenario's ``[incidents]`` (:func:`trial_incidents`).
+    settle_row : int
+        The trial's settling row (:attr:`boatland.trial.result.Result.settle_row`).
+    """
+
+    def __init__(self, incidents, settle_row: int):
+        defs = trial_incidents(incidents)
+        self.slip = [d for d in defs if isinstance(d, SlipDistance)]
+        self.slide = [d for d in defs if isinstance(d, SlideWithin)]
+        self.roll = [d for d in defs if isinstance(d, RollAbove)]
+        self.k_settle = int(settle_row)
+        self.done: set = set()
+        self.first_slip: int | None = None         # the row of the first stick → slip after the settling
+        self._prev = None                          # the last row's modes (the stick → slip across blocks)
+        self._t = np.empty(0)                      # times and each contact's path slid so far, the rows a
+        self._path = np.empty((0, 0))              # window may still reach back to
+        self._carry = None
+
+    @property
+    def pending(self) -> bool:
+        return len(self.done) < len(self.slip) + len(self.slide) + len(self.roll)
+
+    def __call__(self, block, offsets) -> list[tuple[float, str]]:
+        """``(t, "incident: NAME at t = … s")`` of the definitions first met in ``block`` (a
+        :class:`~boatland.trial.sink.StepBlock`); ``offsets`` (n, Nc) its landing offsets [m]
+        (:func:`boatland.trial.events.track_landing`)."""
+        t = np.asarray(block.t)
+        k0 = int(block.k0)
+        mode = np.asarray(block.mode)
+        ks = max(self.k_settle - k0, 0)             # the block's first row after the settling
+        if self.first_slip is None and mode.shape[1]:
+            prev = np.vstack([self._prev if self._prev is not None else mode[:1], mode])
+            onset = np.flatnonzero(((prev[1:] == SLIP) & (prev[:-1] == STICK)).any(axis=1))
+            onset = onset[onset >= ks]
+            if onset.size:
+                self.first_slip = k0 + int(onset[0])
+        if mode.shape[0]:
+            self._prev = mode[-1:].copy()
+        out = []
+        if self.slip and self.first_slip is not None and mode.shape[1]:
+            a = max(self.first_slip - k0, 0)
+            worst = np.fmax.reduce(np.asarray(offsets)[a:], axis=1) if a < t.size else np.empty(0)
+            for d in self.slip:
+                if d.name not in self.done and (k := np.flatnonzero(worst > d.distance)).size:
+                    self.done.add(d.name)
+                    out.append((float(t[a + k[0]]), d.name))
+        if self.slide and block.slide is not None and mode.shape[1]:
+            out += self._slides(block, t, k0)
+        for d in self.roll:
+            if d.name not in self.done and (k := np.flatnonzero(np.abs(block.x[:, 3]) > math.radians(d.limit_deg))).size:
+                self.done.add(d.name)
+                out.append((float(t[k[0]]), d.name))
+        return [(ti, f"incident: {name} at t = {ti:.2f} s") for ti, name in sorted(out)]
+
+    def _slides(self, block, t, k0: int) -> list[tuple[float, str]]:
+        """:class:`SlideWithin` over the rows so far (:func:`boatland.trial.events.windowed_slide`'s sums)."""
+        step = np.hypot(block.slide[..., 0], block.slide[..., 1])
+        step = np.where((k0 + np.arange(t.size) > self.k_settle)[:, None], step, 0.0)
+        carry = self._carry if self._carry is not None else np.zeros(step.shape[1])
+        path = carry + np.cumsum(step, axis=0)
+        self._carry = path[-1].copy() if t.size else carry
+        # the rows a window may reach back to, and this block (the path is 0 up to the settling)
+        ts = np.concatenate([self._t, t]) if len(self._t) else t
+        ps = np.concatenate([self._path, path]) if len(self._path) else path
+        out = []
+        for d in self.slide:
+            if d.name in self.done:
+                continue
+            lo = np.searchsorted(ts, t - d.window - 1e-9 * max(1.0, d.window))
+            w = (path - ps[lo]).max(axis=1)
+            if (k := np.flatnonzero(w > d.distance)).size:
+                self.done.add(d.name)
+                out.append((float(t[k[0]]), d.name))
+        reach = max((d.window for d in self.slide), default=0.0)
+        keep = ts >= ts[-1] - reach - 1.0 if ts.size else np.zeros(0, bool)
+        self._t, self._path = ts[keep], ps[keep]
+        return out

@@ -69,7 +69,7 @@ def thrust_series(scenario: Scenario, dt: float, n_steps: int) -> np.ndarray:
 
 def wave_start(scenario: Scenario) -> float:
     """Time [s] at which the waves begin to ramp in: once the thrust is fully on (the tank tests of
-    seed 001 §4.3.3 pushed the fender on before the waves arrived), else at once."""
+    Ferreira González 2023 §4.3.3 pushed the fender on before the waves arrived), else at once."""
     return scenario.thrust.ramp if (scenario.thrust is not None and scenario.fender is not None) else 0.0
 
 
@@ -132,7 +132,7 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
              setup: Setup | None = None) -> Result:
     r"""Run one landing trial.
 
-    Equation of motion (DESIGN.md §1; Cummins 1962, seed 000 eq. 3.40; contact: seed 001 §2.5, §3.4):
+    Equation of motion (DESIGN.md §1; Cummins 1962, San Nicolás Méndez 2024 eq. 3.40; contact: Ferreira González 2023 §2.5, §3.4):
 
     .. math::
         (M + A_\infty)\ddot x + \int_0^t K(t-\tau)\dot x\,d\tau + B_v\dot x + B_q|\dot x|\dot x + C x
@@ -292,8 +292,8 @@ def _run_watched(arrays, dt: float, n: int, kwargs: dict, progress, sinks, info:
     return out
 
 
-#: The kernel outputs a :class:`StepBlock` carries (the per-step slide and friction work stay in the Result).
-_BLOCK_SERIES = frozenset(SERIES) - {"t", "F_exc", "thrust"}
+#: The kernel outputs a :class:`StepBlock` carries (the per-step friction work stays in the Result).
+_BLOCK_SERIES = (frozenset(SERIES) - {"t", "F_exc", "thrust"}) | {"slide"}
 
 
 def _send(sinks, live: dict, F, thrust, dt: float, k0: int, k1: int) -> None:

@@ -16,6 +16,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Protocol, runtime_checkable
 
+import numpy as np
+
 from boatland.landing.setup import Setup
 from boatland.vessel.database import HydroDB
 from boatland.scenario.scenario import Scenario
@@ -84,6 +86,8 @@ class StepBlock(TrialSeries):
     k0: int = 0
     k1: int = 0
     events: list[Event] = field(default_factory=list)
+    #: (n, Nc, 2) the slide over the tube in each row's step [m] (:attr:`~boatland.trial.result.Result.slide`).
+    slide: np.ndarray | None = None
 
 
 @runtime_checkable

@@ -4,13 +4,13 @@ Everything the time-domain and frequency-domain services need about the hull in 
 typed, validated, immutable :class:`HydroDB`. Readers of BEM output (WAMIT, NEMOH, AQWA, Capytaine,
 BEMIO HDF5) and the Capytaine builder all produce it; the BEMIO HDF5 writer stores it.
 
-Equation of motion it serves (Cummins 1962; seed 000 eq. 3.37):
+Equation of motion it serves (Cummins 1962; San Nicolás Méndez 2024 eq. 3.37):
 
 .. math::
     (M + A_\infty)\ddot x + \int_0^t K(t-\tau)\dot x(\tau)\,d\tau + C x = F_{exc}(t) + \dots,
     \qquad K(t) = \frac{2}{\pi}\int_0^\infty B(\omega)\cos\omega t\,d\omega
 
-and, in the frequency domain (seed 000 eq. 3.31),
+and, in the frequency domain (San Nicolás Méndez 2024 eq. 3.31),
 
 .. math:: \left[-\omega^2 (M + A(\omega)) + i\omega B(\omega) + C\right]\hat x = X(\omega,\beta)\,a .
 
@@ -284,7 +284,7 @@ class HydroDB:
 
         Solves :math:`T = 2\pi\sqrt{(M_{ii} + A_{ii}(2\pi/T))/C_{ii}}` by fixed-point iteration on the
         frequency-dependent added mass (linear interpolation in ω; A∞ above the band, the lowest
-        value below it). Uncoupled: the usual first estimate (seed 004, "natural periods").
+        value below it). Uncoupled: the usual first estimate (Naaijen 2012, "natural periods").
 
         Without a mass matrix the heave mass is taken as ρ∇ (exact for a freely floating body in
         equilibrium); roll and pitch then need the inertia and are not given.

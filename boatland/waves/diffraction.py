@@ -10,28 +10,28 @@ convention of :mod:`boatland.conventions` with the phase measured at the global 
 .. math:: \hat\eta_0(x, y) = e^{-ik(x\cos\beta + y\sin\beta)}, \qquad
           \eta_0(t) = \mathrm{Re}\{\hat\eta_0 e^{i\omega t}\}.
 
-Solution (MacCamy & Fuchs 1954; seed 000 eq. 3.9–3.23; seed 001 eq. 2.37–2.44, written there in
+Solution (MacCamy & Fuchs 1954; San Nicolás Méndez 2024 eq. 3.9–3.23; Ferreira González 2023 eq. 2.37–2.44, written there in
 exp(−iωt) with :math:`H^{(1)}`). With polar coordinates :math:`x = r\cos\varphi,\ y = r\sin\varphi`
 and the angle from the direction of travel :math:`\vartheta = \varphi - \beta` (so
 :math:`\vartheta = \pi` is the up-wave face, :math:`\vartheta = 0` the lee), the Jacobi–Anger
 expansion :math:`e^{-ikr\cos\vartheta} = \sum_m \varepsilon_m (-i)^m J_m(kr)\cos m\vartheta`
-(seed 000 eq. 3.13) and the no-flux condition :math:`\partial_r(\hat\eta_0 + \hat\eta_s) = 0` at
+(San Nicolás Méndez 2024 eq. 3.13) and the no-flux condition :math:`\partial_r(\hat\eta_0 + \hat\eta_s) = 0` at
 :math:`r = a` give the outgoing scattered wave (:math:`H_m = H_m^{(2)} = J_m - iY_m`, outgoing for
-exp(+iωt), seed 000 eq. 3.16–3.18, 3.23):
+exp(+iωt), San Nicolás Méndez 2024 eq. 3.16–3.18, 3.23):
 
 .. math::
     \hat\eta_s(r, \vartheta) = \sum_{m=0}^{M} A_m(ka)\, H_m(kr) \cos m\vartheta, \qquad
     A_m = -\varepsilon_m (-i)^m \frac{J_m'(ka)}{H_m'(ka)},
 
-:math:`\varepsilon_0 = 1,\ \varepsilon_{m\ge1} = 2` (the complex conjugate of seed 001 eq. 2.42,
-:math:`E_m/(-i) = -n_m i^m J_m'/H_m^{(1)\prime}`, as the change of time convention requires; seed 000
+:math:`\varepsilon_0 = 1,\ \varepsilon_{m\ge1} = 2` (the complex conjugate of Ferreira González 2023 eq. 2.42,
+:math:`E_m/(-i) = -n_m i^m J_m'/H_m^{(1)\prime}`, as the change of time convention requires; San Nicolás Méndez 2024
 eq. 3.18 misprints :math:`H^{(1)\prime}` for :math:`H^{(2)\prime}`). Depth dependence and the other fields follow
 from linear theory (:math:`\hat\eta = -\tfrac{1}{g}\,i\omega\,\hat\phi(z=0)`):
 
 .. math::
     Z(z) = \frac{\cosh k(z+h)}{\cosh kh}\ (\to e^{kz}), \qquad
     \hat\phi = \frac{ig}{\omega} Z\,\hat\eta, \qquad
-    \hat p = -\rho\,\partial_t\Phi = \rho g\, Z\, \hat\eta \ \text{(seed 000 eq. 3.20–3.21)},
+    \hat p = -\rho\,\partial_t\Phi = \rho g\, Z\, \hat\eta \ \text{(San Nicolás Méndez 2024 eq. 3.20–3.21)},
 
 .. math::
     \hat{\mathbf u}_h = \frac{ig}{\omega} Z\, \nabla_h\hat\eta, \qquad
@@ -51,7 +51,7 @@ Truncation rule (:func:`n_terms`)
     outside the pile; beyond :math:`m \approx ka` the terms fall faster than geometrically, so the
     omitted tail is of the order of ``tol``. The factor :math:`1 + m/ka` covers the tangential
     velocity (:math:`m/kr` times the elevation term). Without that factor the rule gives
-    M = 13 at ka = 4 and tol = 1e-6, the number seed 000 (§3.2.1, Fig. 3.5) found; with it,
+    M = 13 at ka = 4 and tol = 1e-6, the number San Nicolás Méndez 2024 (§3.2.1, Fig. 3.5) found; with it,
     M(ka = 0.5, 1, 2, 4, 8) = 6, 8, 10, 14, 20.
 
 Numerics
@@ -63,8 +63,8 @@ Numerics
 
 References
     MacCamy, R.C. & Fuchs, R.A. (1954), *Wave forces on piles: a diffraction theory*, Beach Erosion
-    Board Tech. Memo 69. Havelock, T.H. (1940), *Proc. R. Soc. A* 175. Seed 000 §3.1–3.2, §4.1;
-    seed 001 §2.4.1 eq. 2.37–2.44. Chakrabarti, S.K. (1987), *Hydrodynamics of Offshore Structures*, §6.
+    Board Tech. Memo 69. Havelock, T.H. (1940), *Proc. R. Soc. A* 175. San Nicolás Méndez (2024) §3.1–3.2, §4.1;
+    Ferreira González 2023 §2.4.1 eq. 2.37–2.44. Chakrabarti, S.K. (1987), *Hydrodynamics of Offshore Structures*, §6.
 """
 
 from __future__ import annotations
@@ -211,7 +211,7 @@ def cylinder_field(x, y, z, omega, beta, a: float, h: float = math.inf, *, g: fl
                    paired: bool = False, tol: float = TOL) -> WaveField:
     r"""Incident, scattered or total wave field around a bottom-mounted vertical cylinder.
 
-    Equations and truncation rule: module docstring (MacCamy & Fuchs 1954; seed 000 eq. 3.13–3.23).
+    Equations and truncation rule: module docstring (MacCamy & Fuchs 1954; San Nicolás Méndez 2024 eq. 3.13–3.23).
 
     Parameters
     ----------
@@ -338,7 +338,7 @@ def pile_force(omega, a: float, h: float = math.inf, *, g: float = 9.81, rho: fl
 
 
 def _arc_trig(m: np.ndarray, t1: float, t2: float) -> np.ndarray:
-    r""":math:`\int_{\theta_1}^{\theta_2}\cos m\theta\cos\theta\,d\theta` (seed 000 eq. 4.1–4.3)."""
+    r""":math:`\int_{\theta_1}^{\theta_2}\cos m\theta\cos\theta\,d\theta` (San Nicolás Méndez 2024 eq. 4.1–4.3)."""
     m = np.asarray(m, dtype=float)
     out = np.empty(m.shape)
     for i, mi in enumerate(m):
@@ -353,11 +353,11 @@ def _arc_trig(m: np.ndarray, t1: float, t2: float) -> np.ndarray:
 def arc_plate_force(omega, a: float, d: float, theta1: float, theta2: float, h: float, *,
                     part: str = "scattered", g: float = 9.81, rho: float = 1025.0,
                     tol: float = TOL) -> np.ndarray:
-    r"""Closed-form x-force on a bottom-mounted arc plate r = d, θ₁ ≤ θ ≤ θ₂ (seed 000 §4.1).
+    r"""Closed-form x-force on a bottom-mounted arc plate r = d, θ₁ ≤ θ ≤ θ₂ (San Nicolás Méndez 2024 §4.1).
 
     Wave along +x (θ = 0 is the lee of the pile). With the plate normal
     :math:`\mathbf n = (\cos\theta, \sin\theta, 0)` and :math:`F_1 = \int p\, n_1\, dS` over one face
-    (seed 000 eq. 3.22, 4.1–4.4; Kagemoto-type closed form after seed 000 ref. [7]):
+    (San Nicolás Méndez 2024 eq. 3.22, 4.1–4.4; Kagemoto-type closed form after San Nicolás Méndez 2024 ref. [7]):
 
     .. math::
         \frac{F_1}{\rho g h d} = \frac{\tanh kh}{kh}\sum_m c_m\,
@@ -365,7 +365,7 @@ def arc_plate_force(omega, a: float, d: float, theta1: float, theta2: float, h: 
 
     :math:`c_m = A_m H_m^{(2)}(kd)` for the scattered wave, :math:`c_m = \varepsilon_m(-i)^m J_m(kd)`
     for the incident (Froude–Krylov) wave, with the trigonometric integral of eq. 4.1–4.3. Note:
-    seed 000 writes eq. 4.1 without the minus sign of :math:`A_m` (its eq. 3.21 has it) and
+    San Nicolás Méndez 2024 writes eq. 4.1 without the minus sign of :math:`A_m` (its eq. 3.21 has it) and
     :math:`H'` without the kind; this function follows eq. 3.21, which the panel integration of
     :func:`cylinder_field` pressures confirms.
 

@@ -1,6 +1,6 @@
 r"""Linear dispersion relation and the finite-depth factor of the TMA spectrum.
 
-Dispersion of linear (Airy) waves in water of depth h (seed 001 eq. 2.29; Dean & Dalrymple 1991 §3):
+Dispersion of linear (Airy) waves in water of depth h (Ferreira González 2023 eq. 2.29; Dean & Dalrymple 1991 §3):
 
 .. math:: \omega^2 = g\,k \tanh(k h), \qquad \omega^2 = g k \ \ (h = \infty).
 
@@ -97,7 +97,7 @@ def tma_depth_factor(omega, h: float, g: float = 9.81) -> np.ndarray:
     Vincent 1985, *J. Geophys. Res.* 90(C1), eq. 5). It maps the ω⁻⁵ saturation range of deep water to
     finite depth: φ → 1 for kh → ∞, φ → ½ ω²h/g for kh → 0.
 
-    (The appendix script of seed 002 uses cosh²(kh)/(cosh²(kh) + ω²h/g), which tends to 1 rather
+    (The appendix script of Grøtting 2015 uses cosh²(kh)/(cosh²(kh) + ω²h/g), which tends to 1 rather
     than 0 in shallow water; boatland uses the published form above.)
 
     Parameters

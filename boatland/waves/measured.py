@@ -1,6 +1,6 @@
 r"""A measured wave record (elevation at a gauge) as wave components, to replay a tank test.
 
-Seed 001 §5.2.3 replays the tank's wave gauge through its FFT (20 dominant components there). The
+Ferreira González (2023) §5.2.3 replays the tank's wave gauge through its FFT (20 dominant components there). The
 record :math:`\eta_n = \eta(t_0 + n\Delta t)`, n = 0..M−1, is written exactly as its discrete Fourier
 series (``numpy.fft.rfft``, :math:`C_m = \sum_n \eta_n e^{-2\pi i m n / M}`):
 

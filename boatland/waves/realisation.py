@@ -1,6 +1,6 @@
 r"""Seeded realisations of a sea state as wave components (ω_i, k_i, a_i, θ_i, φ_i).
 
-The sea surface is the sum of :math:`N` linear components (seed 000 eq. 3.32–3.33, seed 001
+The sea surface is the sum of :math:`N` linear components (San Nicolás Méndez 2024 eq. 3.32–3.33, Ferreira González 2023
 eq. 2.45–2.47, Tucker & Pitt 2001 §5):
 
 .. math::

@@ -1,10 +1,10 @@
 r"""Wave spectra (JONSWAP, Pierson–Moskowitz, TMA) and cos-2s directional spreading.
 
 All spectra are one-sided variance densities :math:`S(\omega)` [m² s/rad] of the surface elevation,
-:math:`m_0 = \int_0^\infty S\,d\omega = \sigma_\eta^2`, :math:`H_{m0} = 4\sqrt{m_0}` (seed 000 eq. 3.35–3.36).
+:math:`m_0 = \int_0^\infty S\,d\omega = \sigma_\eta^2`, :math:`H_{m0} = 4\sqrt{m_0}` (San Nicolás Méndez 2024 eq. 3.35–3.36).
 
 JONSWAP (Hasselmann et al. 1973), written about the Pierson–Moskowitz spectrum of the same Hs and Tp
-(seed 003 eq. 30–31, seed 000 eq. 3.34, seed 001 eq. 2.48):
+(Sin Mon 2021 eq. 30–31, San Nicolás Méndez 2024 eq. 3.34, Ferreira González 2023 eq. 2.48):
 
 .. math::
     S_{PM}(\omega) = \frac{5}{16} H_s^2 \omega_p^4\, \omega^{-5}
@@ -24,8 +24,8 @@ is :math:`C = 1/I` with
 The second integrand is confined to the Gaussian of the peak enhancement; it is integrated with
 Gauss–Legendre quadrature on [1 − 12σ_a, 1] and [1, 1 + 12σ_b] (beyond 12σ, r < 1e-31), using
 ``expm1`` for γ^r − 1. The result is exact to ~1e-15 relative, so ``4 sqrt(m0) = Hs`` holds to
-machine precision. Seed 000's closed-form :math:`A_\gamma = 1 - 0.287\ln\gamma` (DNV-RP-C205
-§3.5.5) is within 0.3 % of C for 1 ≤ γ ≤ 5 (2 % at γ = 7, 7 % at γ = 10); seed 001's
+machine precision. San Nicolás Méndez (2024)'s closed-form :math:`A_\gamma = 1 - 0.287\ln\gamma` (DNV-RP-C205
+§3.5.5) is within 0.3 % of C for 1 ≤ γ ≤ 5 (2 % at γ = 7, 7 % at γ = 10); Ferreira González 2023's
 Lewandowski (2004) :math:`1/(1 + (\gamma-1)/6)` (eq. 2.49) is 10 % high at γ = 3.3.
 
 Pierson–Moskowitz is JONSWAP with γ = 1 (C = 1). TMA (Bouws et al. 1985) is JONSWAP times the
@@ -33,14 +33,14 @@ Kitaigorodskii depth factor φ(ω, h) of :func:`boatland.waves.dispersion.tma_de
 published (and as DNV-RP-C205 §3.5.5.5 uses it) the JONSWAP part keeps its deep-water
 normalisation, so in finite depth :math:`4\sqrt{m_0} < H_s` — the energy a shallow bottom removes.
 
-Directional spreading (Longuet-Higgins, Cartwright & Smith 1963; seed 003 eq. 33):
+Directional spreading (Longuet-Higgins, Cartwright & Smith 1963; Sin Mon 2021 eq. 33):
 
 .. math::
     D(\theta) = \frac{\Gamma(s+1)}{2\sqrt\pi\,\Gamma(s+\frac12)}
                 \cos^{2s}\left(\frac{\theta - \bar\theta}{2}\right), \qquad
     |\theta - \bar\theta| \le \pi, \qquad \int_{-\pi}^{\pi} D\,d\theta = 1,
 
-identical to seed 003's :math:`\frac{2^{2s-1}}{\pi}\frac{\Gamma^2(s+1)}{\Gamma(2s+1)}` by the
+identical to Sin Mon 2021's :math:`\frac{2^{2s-1}}{\pi}\frac{\Gamma^2(s+1)}{\Gamma(2s+1)}` by the
 duplication formula. Its cumulative distribution is a regularised incomplete beta function (substitute
 :math:`v = \sin^2(u/2)`, :math:`u = \theta - \bar\theta`):
 
@@ -116,8 +116,8 @@ def jonswap(omega, Hs: float, Tp: float, gamma: float = 3.3, sigma_a: float = SI
 
     References
     ----------
-    Hasselmann et al. (1973), *Dtsch. Hydrogr. Z.* A8(12); seed 000 eq. 3.34, seed 001 eq. 2.48,
-    seed 003 eq. 30–31; normalisation: module docstring.
+    Hasselmann et al. (1973), *Dtsch. Hydrogr. Z.* A8(12); San Nicolás Méndez 2024 eq. 3.34, Ferreira González 2023 eq. 2.48,
+    Sin Mon 2021 eq. 30–31; normalisation: module docstring.
     """
     w = np.asarray(omega, dtype=float)
     wp = 2.0 * math.pi / Tp
@@ -131,7 +131,7 @@ def jonswap(omega, Hs: float, Tp: float, gamma: float = 3.3, sigma_a: float = SI
 
 def pierson_moskowitz(omega, Hs: float, Tp: float) -> np.ndarray:
     r"""Pierson–Moskowitz spectrum :math:`\frac{5}{16}H_s^2\omega_p^4\omega^{-5}e^{-\frac54(\omega_p/\omega)^4}`
-    [m² s/rad] (Pierson & Moskowitz 1964; seed 003 eq. 30) — JONSWAP with γ = 1."""
+    [m² s/rad] (Pierson & Moskowitz 1964; Sin Mon 2021 eq. 30) — JONSWAP with γ = 1."""
     return jonswap(omega, Hs, Tp, 1.0)
 
 

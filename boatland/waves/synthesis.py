@@ -1,6 +1,6 @@
 r"""Sums of harmonic components on time grids: wave elevation and (through excitation) forces.
 
-Linear superposition (seed 000 eq. 3.32, seed 001 eq. 2.45) in the exp(+iωt) convention of
+Linear superposition (San Nicolás Méndez 2024 eq. 3.32, Ferreira González 2023 eq. 2.45) in the exp(+iωt) convention of
 :mod:`boatland.conventions`:
 
 .. math::

@@ -57,7 +57,8 @@ def test_pivot_rows_hs_columns_tp_heading_sections_push():
     assert s.column_text(s.columns[0]) == "Tp 6 s, head seas (180°)"
     assert s.title() == "push 80 kN"
     cell = s.cells[(0.5, (6.0, 180.0))]
-    assert (cell.k, cell.n) == (3, 4) and cell.text() == "0.75 [0.19, 0.99] (screening 0.50)"
+    assert (cell.k, cell.n) == (3, 4) and cell.text() == "0.75 [0.19, 0.99]"     # a slip distance: no screening
+    assert cell.text(screening=True) == "0.75 [0.19, 0.99] (screening 0.50)"    # as in the table of first slip
     md = dec.markdown()
     assert "| Hs [m] | Tp 6 s, head seas (180°) |" in md and "## push 60 kN" in md
     assert "sea.relative_direction_deg" not in md and "sea.Hs" not in md and "inf" not in md
@@ -91,7 +92,8 @@ def test_other_estimates_appear_beside_the_monte_carlo():
     data = fake_store(counts, extra=extra)
     assert set(other_estimates(data["stats"], INC)) == {"isee"}
     dec = decision(data, INC, 0.1)
-    assert dec.sections[0].cells[(0.25, (7.0, 180.0))].text() == "0.00 [0.00, 0.60] (screening 0.50; isee 0.00 [0.00, 0.01])"
+    # the screening (slip onsets) is not beside this incident, a slip distance; the other estimate is of it
+    assert dec.sections[0].cells[(0.25, (7.0, 180.0))].text() == "0.00 [0.00, 0.60] (isee 0.00 [0.00, 0.01])"
     d = dec.as_dict()
     assert d["sections"][0]["cells"][1][0]["other_estimates"]["isee"]["P"] == 0.6
     assert not math.isnan(d["sections"][0]["cells"][1][0]["P_lo"])

@@ -86,4 +86,4 @@ def test_store_as_xarray(small_store):
     assert json.loads(ds.attrs["inputs"])["thrust"] == 150e3
     with contextlib.redirect_stdout(io.StringIO()):
         files = write_report(store, store.parent / "rep2", figures=False)
-    assert all(f.suffix in (".md", ".csv") for f in files)
+    assert all(f.suffix in (".md", ".csv", ".html") for f in files)        # tables and the page, no figure

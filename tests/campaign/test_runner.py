@@ -7,6 +7,7 @@ import time
 from pathlib import Path
 
 import h5py
+import numpy as np
 import pytest
 
 REPO = Path(__file__).resolve().parents[2]
@@ -24,10 +25,11 @@ duration = {duration}
 [set]
 "radiation.method" = "{method}"
 [axes]
-"sea.Hs" = [0.3, 0.6]
-"sea.relative_direction_deg" = [180.0, 135.0]
+"sea.Hs" = [0.3, 0.8]
+"sea.relative_direction_deg" = [180.0, 90.0]
 [incidents]
 slip_distance = [0.05]
+slide_within = [{{distance = 0.05, window = 20.0}}]
 {extra}
 """)
     return path
@@ -173,7 +175,7 @@ def test_report_writes_tables_and_figures(reference, tmp_path):
             "time_to_incident.png"} <= names
     header = (tmp_path / "rep" / "cases.csv").read_text().splitlines()[0]
     assert "slip > 0.05 m: P lo" in header and "first slip: mean time [s]" in header
-    assert "screening: P(slip) (frequency domain)" in header      # seed 002 Tables 4.14–4.15 side by side
+    assert "screening: P(first slip) (frequency domain)" in header      # Grøtting 2015 Tables 4.14–4.15 side by side
 
 
 @pytest.mark.slow
@@ -184,3 +186,25 @@ def test_an_unwritable_store_fails_before_any_trial(reference, tmp_path):
     r = run("campaign", camp, "-o", blocker / "store.h5")
     assert r.returncode == 2 and f"-o {blocker / 'store.h5'}: {blocker} is a file, not a folder" in r.stderr
     assert "Traceback" not in r.stderr and len(r.stderr.strip().splitlines()) == 1
+
+
+SLIDE = "slide > 0.05 m within 20 s"
+
+
+@pytest.mark.slow
+def test_a_slide_incident_is_counted_and_reported(reference, tmp_path):
+    """The campaign's ``slide_within`` is a column of the store like every incident: a slide comes with (or
+    after) a first slip, and the report's table names it."""
+    _, store = reference
+    from boatland.campaign.report import read_store
+
+    data = read_store(store)
+    t, stats, names = data["trials"], data["stats"], data["header"]["incidents"].split("\n")
+    assert SLIDE in names and f"{SLIDE}: count" in stats.dtype.names
+    slide, slip = t[f"incident: {SLIDE}"], t["incident: first slip"]
+    assert np.isfinite(slide).any() and not np.isfinite(slide).all()     # the sweep sees slides and trials without
+    assert np.all(np.isfinite(slip[np.isfinite(slide)])) and np.all(slip[np.isfinite(slide)] <= slide[np.isfinite(slide)])
+    assert stats[f"{SLIDE}: count"].sum() == np.isfinite(slide).sum() <= np.isfinite(slip).sum()
+    r = run("report", store, "-o", tmp_path / "rep", "--incident", SLIDE)
+    assert r.returncode == 0, r.stderr
+    assert f"P({SLIDE} within the access)" in r.stdout

@@ -19,7 +19,7 @@ def test_clopper_pearson_is_the_exact_binomial_interval(k, n):
 
 
 def test_exponential_interval_is_seed002_eq_3_55_without_censoring():
-    t = np.array([3906, 262, 763, 800, 6914, 5776, 450, 962.0])   # seed 002 Table 4.14, 2.25 m / 9 s / 0°
+    t = np.array([3906, 262, 763, 800, 6914, 5776, 450, 962.0])   # Grøtting 2015 Table 4.14, 2.25 m / 9 s / 0°
     m, lo, hi = exponential_mean_interval(t, 10000.0, confidence=0.90)
     n, tbar = t.size, t.mean()
     assert m == pytest.approx(tbar)

@@ -106,5 +106,11 @@ def test_irf_figure(tmp_path, figures):
 def test_report_figures(small_store, tmp_path, figures):
     _, store, _ = small_store
     assert main(["report", str(store), "-o", str(tmp_path / "rep")]) == 0
-    assert len(figures) == 3
-    check(figures, "small", "push 150 kN", "μ_s 0.8", "3 seeds per case")
+    # P vs Hs, limiting Hs, time to incident; and what moves the limit (a tornado: factors down its y axis)
+    tornado = [f for f in figures if "what moves the limit" in f[1]]
+    assert len(figures) == 4 and len(tornado) == 1
+    check([f for f in figures if f not in tornado], "small", "push 150 kN", "μ_s 0.8", "3 seeds per case")
+    fig, texts, axes = tornado[0]
+    assert all(UNIT.search(xlabel) for _, xlabel, _, data, _ in axes if data)
+    for word in ("small", "push 150 kN", "μ_s 0.8", "3 seeds per case"):
+        assert word in texts, (word, texts)

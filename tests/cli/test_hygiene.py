@@ -2,6 +2,7 @@
 refusals before any work, and the run's verdict output."""
 
 import json
+import re
 from pathlib import Path
 
 import pytest
@@ -71,7 +72,8 @@ def test_run_prints_the_verdict_first_and_json_has_events(capsys, tmp_path):
     assert main(["run", CTV24_LANDING, "--duration", "45", "--no-log"]) == 0
     out = capsys.readouterr().out.splitlines()
     assert out[0].startswith("SLIPPED at t = ") and "JONSWAP Hs 1.5 m, Tp 7 s" in out[0] and "push 80 kN" in out[0]
-    assert not [ln for ln in out if "e-" in ln]                   # no 1.2e-05 kN, no 3e-15 m
+    noise = re.compile(r"\de-\d+ ?(kN|N|m|s|°)")                   # no 1.2e-05 kN, no 3e-15 m (odds may be 5e-3)
+    assert not [ln for ln in out if noise.search(ln)]
     assert not [ln for ln in out if "contact 0:" in ln]           # a symmetric landing: "contacts 0+1"
     assert "settling events hidden: --events all" in "\n".join(out)
     assert main(["run", CTV24_LANDING, "--duration", "45", "--no-log", "--json", "--events", "all"]) == 0

@@ -1,5 +1,5 @@
 """Operability over a scatter table (boatland.freqdomain.operability): availability on the built-in CTV
-grows with μ·F_b and changes little with water depth (seed 002 §4.1.1, §4.1.4, Tables 4.2 and 4.5);
+grows with μ·F_b and changes little with water depth (Grøtting 2015 §4.1.1, §4.1.4, Tables 4.2 and 4.5);
 the CSV reader's errors and normalisation."""
 
 from __future__ import annotations
@@ -39,7 +39,7 @@ def test_availability_grows_with_mu_times_thrust(landing, fine_scatter):
 
 
 def test_availability_changes_little_with_water_depth(landing, fine_scatter):
-    """Seed 002 Table 4.5 (TMA: 0.370 / 0.358 / 0.350 at 15 / 30 / 60 m, 7.5 % apart). Here the depth
+    """Grøtting (2015) Table 4.5 (TMA: 0.370 / 0.358 / 0.350 at 15 / 30 / 60 m, 7.5 % apart). Here the depth
     enters through the TMA spectrum only (ctv24's coefficients are deep-water): measured 0.282 / 0.259 /
     0.255 / 0.255 at 15 / 30 / 60 m / deep — shallower water, slightly more availability, far less
     than the μ·F_b effect above."""

@@ -1,4 +1,4 @@
-"""Free and hinged RAOs (boatland.freqdomain.rao): long-wave limits, the hinge condition, seed 002's
+"""Free and hinged RAOs (boatland.freqdomain.rao): long-wave limits, the hinge condition, Grøtting 2015's
 closed form of the hinge reaction, equilibrium, the spring-normal hinge tending to the rigid one, the
 static preload."""
 
@@ -39,7 +39,7 @@ def test_free_rao_long_waves_follow_the_surface(db):
 
 
 def test_free_rao_is_the_direct_solve_at_database_frequencies(db):
-    """Seed 000 eq. 3.31 with the database's own arrays (no interpolation at its frequencies)."""
+    """San Nicolás Méndez (2024) eq. 3.31 with the database's own arrays (no interpolation at its frequencies)."""
     idx = [3, 22, 60]
     x = free_rao(db, db.omega[idx])
     assert x.shape == (3, db.n_dir, 6)
@@ -72,7 +72,7 @@ def test_frequencies_above_the_band_are_refused(db):
 
 
 def test_point_map_is_the_rigid_body_translation():
-    """G x = x₁₋₃ + θ × r, and Gᵀ f = [f; r × f] (seed 002 eq. 3.3, 3.7)."""
+    """G x = x₁₋₃ + θ × r, and Gᵀ f = [f; r × f] (Grøtting 2015 eq. 3.3, 3.7)."""
     rng = np.random.default_rng(1)
     r, x, f = rng.normal(size=3), rng.normal(size=6), rng.normal(size=3)
     G = point_map(r)
@@ -89,7 +89,7 @@ def test_rigid_hinge_point_does_not_move(db, points):
 
 
 def test_rigid_hinge_reaction_is_seed002_closed_form(db):
-    r"""Seed 002 eq. 3.11–3.12: P₁ = H (F₂ − Q F₁) − F₁, H = (G₁₁Q + G₁₂)(G₂₁Q + G₂₂ − QG₁₁Q − QG₁₂)⁻¹,
+    r"""Grøtting (2015) eq. 3.11–3.12: P₁ = H (F₂ − Q F₁) − F₁, H = (G₁₁Q + G₁₂)(G₂₁Q + G₂₂ − QG₁₁Q − QG₁₂)⁻¹,
     Q = S(r_p); and eq. 3.9/3.33 for the motions: r₂ = (G₂₁Q + G₂₂)⁻¹(F₂ + Q P₁), r₁ = Q r₂."""
     h = hinged_rao(db, W, BOW, beta_deg=BETA)
     Z = impedance(db, W)
@@ -141,7 +141,7 @@ def test_spring_normal_tends_to_the_rigid_hinge(db):
 
 
 def test_static_preload_matches_seed002_eq361(db):
-    """Rigid hinge at the bow, thrust below it: the static vertical force F_zc of seed 002 eq. 3.56–3.61
+    """Rigid hinge at the bow, thrust below it: the static vertical force F_zc of Grøtting 2015 eq. 3.56–3.61
     (thrust along global x). hinged_rao also tilts the thrust with the static pitch (§3.4 neglects it:
     under 1 % here) — its static state is in equilibrium with the preload stiffness included."""
     T, rT = 80e3, np.array([-10.5, 0.0, -0.9])

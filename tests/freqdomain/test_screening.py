@@ -1,6 +1,6 @@
 """Wu (2014) slip screening (boatland.freqdomain.screening) on the built-in CTV (ctv24,
 scenarios/ctv24_landing.toml): sign conventions against the hinge reactions, static capacities, the
-limiting-Hs root, monotonicity in μ and thrust (seed 002 §4.1.1), bad input."""
+limiting-Hs root, monotonicity in μ and thrust (Grøtting 2015 §4.1.1), bad input."""
 
 from __future__ import annotations
 
@@ -63,7 +63,7 @@ def test_margins_are_the_slip_conditions_of_the_contact_forces(landing, shear):
 
 
 def test_wu_method_has_the_thrust_as_static_normal_only(single):
-    """Seed 002 §3.2.1: rigid hinge, N⁰ = F_b, no static vertical force: every capacity is μF_b."""
+    """Grøtting (2015) §3.2.1: rigid hinge, N⁰ = F_b, no static vertical force: every capacity is μF_b."""
     db, s = single
     tr = slip_transfer(db, s, omega=[0.8], beta_deg=[180.0], method="wu")
     assert tr.N_static == pytest.approx([s.thrust])
@@ -71,25 +71,30 @@ def test_wu_method_has_the_thrust_as_static_normal_only(single):
 
 
 def test_limiting_hs_is_the_root_of_the_accept_criterion(landing):
-    """At the limit P_inc per cycle = P_facc Tp / t_acc (seed 002 eq. 3.38–3.40); the vectorised bisection
+    """At the limit P_inc per cycle = P_facc Tp / t_acc (Grøtting 2015 eq. 3.38–3.40); the vectorised bisection
     equals one cell at a time."""
     db, s = landing
     tr = slip_transfer(db, s, beta_deg=BETA)
     m, _ = spectral_moments(tr, TP)
-    tab = limiting_hs(m, tr.capacity, TP, BETA, accept="best")
-    pc, _, _ = incident_probability(tab.Hs, m, tr.capacity, TP)
+    tab = limiting_hs(m, tr.capacity, TP, BETA, accept="best", statistics="rayleigh")
+    pc, _, _ = incident_probability(tab.Hs, m, tr.capacity, TP, statistics="rayleigh")
     np.testing.assert_allclose(pc, np.broadcast_to(ACCEPT_PRESETS["best"] * TP[:, None] / 1800.0, pc.shape), rtol=1e-9)
-    one = limiting_hs(m[2:3, 1:2], tr.capacity, TP[2:3], BETA[1:2])
+    one = limiting_hs(m[2:3, 1:2], tr.capacity, TP[2:3], BETA[1:2], statistics="rayleigh")
     assert one.Hs[0, 0] == pytest.approx(tab.Hs[2, 1], rel=1e-12)
+    # with Rice's up-crossings (the default) the limit is where P per access is the accepted risk
+    rice = limiting_hs(m, tr.capacity, TP, BETA, accept="best")
+    _, pa, _ = incident_probability(rice.Hs, m, tr.capacity, TP, statistics="rice")
+    assert rice.statistics == "rice"
+    np.testing.assert_allclose(pa, ACCEPT_PRESETS["best"], rtol=1e-9)
     # every σ is linear in Hs: the margins' m0 scale with Hs²
-    _, _, p1 = incident_probability(1.0, m, tr.capacity, TP)
-    _, _, p2 = incident_probability(2.0, m, tr.capacity, TP)
+    _, _, p1 = incident_probability(1.0, m, tr.capacity, TP, statistics="rayleigh")
+    _, _, p2 = incident_probability(2.0, m, tr.capacity, TP, statistics="rayleigh")
     assert np.allclose(np.log(p2[..., :-1]), np.log(p1[..., :-1]) / 4)
 
 
 @pytest.mark.parametrize("statistics", ["rayleigh", "rice", "vanmarcke"])
 def test_limiting_hs_rises_with_thrust_and_friction(landing, statistics):
-    """Seed 002 §4.1.1 (Figures 4.1–4.3): more bollard push or friction → larger limiting Hs, everywhere."""
+    """Grøtting (2015) §4.1.1 (Figures 4.1–4.3): more bollard push or friction → larger limiting Hs, everywhere."""
     db, s = landing
     grid = lambda **kw: screening_grid(db, s, TP, BETA, statistics=statistics, **kw).Hs  # noqa: E731
     for lo, hi in ((dict(mu=0.5), dict(mu=0.6)), (dict(mu=0.6), dict(mu=0.8)),
@@ -99,7 +104,7 @@ def test_limiting_hs_rises_with_thrust_and_friction(landing, statistics):
 
 
 def test_stricter_acceptance_lowers_the_limit(landing):
-    """Seed 002 §4.1.3 / Table 2.1 presets: conservative < best < non-conservative."""
+    """Grøtting (2015) §4.1.3 / Table 2.1 presets: conservative < best < non-conservative."""
     db, s = landing
     tr = slip_transfer(db, s, beta_deg=BETA)
     m, _ = spectral_moments(tr, TP)

@@ -63,7 +63,7 @@ def test_rice_up_crossing_rate(process, r):
 
 @pytest.mark.parametrize("r", [2.0, 3.0])
 def test_rayleigh_peak_per_cycle(process, r):
-    """Share of zero-up-crossing cycles whose maximum exceeds a against e^{−a²/2σ²} (seed 002 eq. 3.36)."""
+    """Share of zero-up-crossing cycles whose maximum exceeds a against e^{−a²/2σ²} (Grøtting 2015 eq. 3.36)."""
     _, x, (m0, _, _) = process
     a = r * np.sqrt(m0)
     z = up_crossings(x, 0.0)
@@ -106,3 +106,20 @@ def test_formula_edge_cases():
     assert rayleigh_exceedance(-1.0, 1.0) == 1.0 and rayleigh_exceedance(1.0, 0.0) == 0.0
     assert np.isclose(rayleigh_exceedance(2.0, 1.0), np.exp(-2.0))
     assert np.isclose(rice_rate(0.0, 1.0, 4.0), 1 / np.pi)  # ν0 = √(m2/m0)/2π
+
+
+def test_the_risk_in_words():
+    """A probability as a planner reads it: odds to two significant figures, small ones as 1.19e-3, the
+    presets named by their source (Grøtting 2015 Table 2.1)."""
+    from boatland.errors import BoatlandInputError
+    from boatland.freqdomain.statistics import one_in, probability_text, risk_in_words
+
+    assert risk_in_words("best") == "1 access in 840 (1.19e-3 per 30-min access, Grøtting 2015 best estimate)"
+    assert risk_in_words(0.00119) == risk_in_words("best")                       # the number is the preset
+    assert risk_in_words("conservative") == "1 access in 50,000 (2e-5 per 30-min access, Grøtting 2015 conservative)"
+    assert risk_in_words(0.005, 600.0) == "1 access in 200 (5e-3 per 10-min access, as given)"
+    assert [one_in(p) for p in (0.5, 0.7, 0.05, 1e-6, 0.0, 1.0)] == ["1 in 2", "1 in 1.4", "1 in 20", "1 in 1,000,000",
+                                                                     "none", "every one"]
+    assert probability_text(0.0268) == "0.0268" and probability_text(1.19e-3) == "1.19e-3"
+    with pytest.raises(BoatlandInputError, match="outside"):
+        risk_in_words(1.5)

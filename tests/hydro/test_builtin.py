@@ -134,7 +134,7 @@ def _physical_band(db, i):
 #   CTVs are stiff in heave and pitch, with resonances below the 4–8 s peak periods of workable seas;
 # - roll 2.5–4.5 s: GM_T ≈ 8.7 m (demihulls 3.1 m off the centreline) makes roll short too, but
 #   the roll inertia (r_xx ≈ 0.37 B) and the large roll added inertia lengthen it.
-# Seed 001's Model 2 (a ~1:10 CTV) scaled by √10 (Froude) must fall in the same bands.
+# Ferreira González (2023)'s Model 2 (a ~1:10 CTV) scaled by √10 (Froude) must fall in the same bands.
 CTV_BANDS = {"heave": (2.0, 3.5), "roll": (2.5, 4.5), "pitch": (2.0, 3.5)}
 
 

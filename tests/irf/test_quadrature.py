@@ -21,7 +21,7 @@ def test_exact_for_piecewise_linear_at_any_frequency():
 
 @pytest.mark.slow
 def test_exponential_kernel_gives_lorentzian_damping_and_added_mass():
-    """K = e^{-at}: B(ω) = a/(a²+ω²), A(ω) − A∞ = −1/(a²+ω²)  (Cummins/Ogilvie pair, seed 000 eq. 3.41)."""
+    """K = e^{-at}: B(ω) = a/(a²+ω²), A(ω) − A∞ = −1/(a²+ω²)  (Cummins/Ogilvie pair, San Nicolás Méndez 2024 eq. 3.41)."""
     a = 0.8
     t = np.linspace(0, 40, 40001)  # e^{-32} truncation, h = 1e-3
     K = np.exp(-a * t)

@@ -116,7 +116,7 @@ def test_defaults_and_immutability():
 
 
 def test_swell_plus_wind_sea_keep_their_own_directions():
-    """Seed 002 Table 4.12, case 1: wind sea Hs 1.3 m, Tp 5 s towards 0°; swell Hs 1 m, Tp 10 s towards 45°."""
+    """Grøtting (2015) Table 4.12, case 1: wind sea Hs 1.3 m, Tp 5 s towards 0°; swell Hs 1 m, Tp 10 s towards 45°."""
     sea = SeaState(parts=(SpectrumPart(Hs=1.3, Tp=5.0, direction_deg=0.0),
                           SpectrumPart(Hs=1.0, Tp=10.0, kind="pm", direction_deg=45.0)))
     c = sea.realise(4, 1200.0)

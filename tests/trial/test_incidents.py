@@ -187,3 +187,34 @@ slide_within = [{{distance = 0.5, window = 120.0}}, {{distance = 0.1, window = 3
     camp.write_text(camp.read_text().replace("window = 30.0", "window = -30.0"))
     with pytest.raises(SpecError, match=r"slide_within\[1\]\.window"):
         load_campaign(camp, load_scenario=load)
+
+
+def test_the_watch_of_a_running_trial_finds_what_the_finished_trial_does():
+    """A run log's incidents, found block by block as the trial runs (boatland.trial.incidents.IncidentWatch),
+    are the finished trial's — slip distances from the first slip on, slides within windows that span blocks,
+    roll — for blocks of any length."""
+    import boatland
+    from boatland.trial.events import track_landing
+    from boatland.trial.result import SERIES
+    from boatland.trial.sink import StepBlock
+    from boatland.trial.incidents import IncidentWatch
+
+    r = boatland.simulate("ctv_landing", **{"sea.Hs": 0.5, "sea.relative_direction_deg": 90.0,
+                                            "simulation.duration": 320.0, "incidents.roll_limit_deg": [0.5, 40.0],
+                                            "incidents.slide_within": [{"distance": 0.1, "window": 120.0},
+                                                                       {"distance": 0.05, "window": 2.0}]})
+    expected = {k: v for k, v in r.incident_times().items() if v is not None and k in
+                {d.name for d in r.incident_definitions if isinstance(d, (SlipDistance, SlideWithin, RollAbove))}}
+    assert {"slip > 0.1 m", "slide > 0.1 m within 120 s", "roll > 0.5°"} <= expected.keys()   # it slips and slides
+    for size in (1, 7, 20, 333, len(r.t)):
+        watch = IncidentWatch(r.incidents, r.settle_row)
+        anchor = np.full((r.mode.shape[1], 2), np.nan)
+        found = {}
+        for k0 in range(0, len(r.t), size):
+            k1 = min(k0 + size, len(r.t))
+            block = StepBlock(k0=k0, k1=k1, **{n: getattr(r, n)[k0:k1] for n in SERIES}, slide=r.slide[k0:k1])
+            offsets = np.empty(block.mode.shape)
+            track_landing(block.mode, block.tpos, anchor, offsets, max(0, r.settle_row - k0))
+            for t, text in watch(block, offsets):
+                found[text.split(": ", 1)[1].rsplit(" at t = ", 1)[0]] = t
+        assert found == expected, size

@@ -17,7 +17,7 @@ the two tangential directions of the contact plane, the normal on the fender's l
     \\qquad Z = -\\omega^2 (M + A) + i\\omega B + C,
 
 reaction on the vessel :math:`\\hat J = T\\hat\\lambda - (k_n + i\\omega d_n)\\, n n^\\top G \\hat x`;
-:math:`K_g` is the stiffness of the preload (the thrust follows the vessel's x axis, seed 002 §3.4
+:math:`K_g` is the stiffness of the preload (the thrust follows the vessel's x axis, Grøtting 2015 §3.4
 eq. 3.62–3.63; the static contact forces turn their moments with the vessel).
 
 Time domain (:func:`boatland.trial.simulate.simulate`): ctv24, one bow fender line (1 m wide, centred
@@ -93,7 +93,7 @@ def test_stick_force_is_hinge_reaction_head_seas(ctv24, T, shear):
     assert_close(td[1], fd[1], "vertical stick force")
     # head seas on the centreline: no horizontal reaction in either domain
     assert abs(td[2]) < 1e-9 * abs(td[1]) and abs(fd[2]) < 1e-9 * abs(fd[1])
-    # the preload the frequency domain is linearised about: normal = thrust, vertical ≈ seed 002 eq. 3.61
+    # the preload the frequency domain is linearised about: normal = thrust, vertical ≈ Grøtting 2015 eq. 3.61
     np.testing.assert_allclose(static_td, static_fd, rtol=2e-3)
 
 

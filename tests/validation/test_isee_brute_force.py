@@ -1,4 +1,4 @@
-"""ISEE against brute force: the time domain's P(first slip within the access) of the default CTV
+r"""ISEE against brute force: the time domain's P(first slip within the access) of the default CTV
 (scenarios/ctv24_landing.toml, the first default) in head and in beam seas, estimated by importance sampling of elementary
 events (Au & Beck 2001; boatland.campaign.isee) and by ≥ 2000 plain time-domain trials on Gaussian seas of
 the same spectrum (the same grid, u ~ N(0, I)) — where brute force is affordable, p ≈ 0.1 and 0.01.
@@ -16,6 +16,11 @@ peaks that the ≲ 0.15 σ difference of the stuck forces flips either way; the 
 
 Cost (2 cores, both used): head ≈ 3 min, beam ≈ 3 min (2 × 2000 plain trials + 2 ISEE runs of ≤ 400
 samples each, ≈ 0.09 s per 124-s trial) — the beam case runs with ``-m slow``.
+
+A slide incident (the last test): P(slide > 0.2 m within 60 s in a 60-s access) of the default landing
+(scenarios/ctv_landing.toml: ctv27, 150 kN, μ_s 0.8) in head seas. A slide starts with a slip, so it lies inside
+the sampling domain D of the first slip and the estimator :math:`\bar P\,\overline{1_G/N}` is unbiased for it
+too; checked the same way (the intervals overlap, every brute-force slide inside D, brute force P in 0.01–0.2).
 """
 
 import math
@@ -31,6 +36,7 @@ from boatland.campaign.executor import Executor
 from boatland.campaign.stats import clopper_pearson
 from boatland.campaign.store import row_dtype
 from boatland.campaign.isee import ISEE_FIELDS
+from boatland.campaign.runner import incident_names
 from boatland.checks.files import load, resolve_database
 
 REPO = Path(__file__).resolve().parents[2]
@@ -118,3 +124,65 @@ def test_head_seas_against_brute_force(tmp_path):
 @pytest.mark.slow
 def test_beam_seas_against_brute_force(tmp_path):
     check(compare(tmp_path, "beam"), "beam")
+
+
+# ------------------------------------------------------------------------ a slide incident
+INCIDENT = "slide > 0.2 m within 60 s"
+N_SLIDE = 1500
+SLIDE_HS = 0.5   # head seas, Tp 7 s: brute-force P of the slide ≈ 0.05 (the onset's ≈ 0.3)
+
+
+def slide_campaign(tmp_path):
+    path = tmp_path / "slide.toml"
+    path.write_text(f"""
+name = "slide"
+scenario = "{REPO / 'scenarios' / 'ctv_landing.toml'}"
+method = "isee"
+master_seed = 2026
+duration = 60.0
+[set]
+"sea.Tp" = 7.0
+[axes]
+"sea.Hs" = [{SLIDE_HS}]
+"sea.relative_direction_deg" = [180.0]
+[incidents]
+slide_within = [{{distance = 0.2, window = 60.0}}]
+[isee]
+incident = "{INCIDENT}"
+target_cov = 0.1
+batch = 20
+min_samples = 100
+max_samples = 600
+""")
+    return path
+
+
+@pytest.mark.slow
+def test_a_slide_incident_against_brute_force(tmp_path):
+    src = slide_campaign(tmp_path)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        names = incident_names(load_campaign(src, load_scenario=load))
+    assert INCIDENT in names
+    with Executor("local", 2) as pool:
+        isee = []
+        while True:
+            start = len(isee)
+            specs = [SampleSpec(trial_number(0, 0, k), 0, 0, SLIDE_HS, k) for k in range(start, start + 20)]
+            isee += list(pool.map(execute_sample, [(str(src), s, LOADERS) for s in specs]))
+            est = run_estimates(rows_of(isee, names), names)[INCIDENT]
+            if (len(isee) >= 100 and est.cov <= 0.1) or len(isee) >= 600:
+                break
+        plain = rows_of(list(pool.map(execute_sample, [
+            (str(src), SampleSpec(trial_number(0, 0, k), 0, 0, SLIDE_HS, k), LOADERS, True) for k in range(N_SLIDE)])),
+            names)
+    assert (plain["status"] == 0).all()
+    hit = np.isfinite(plain[f"incident: {INCIDENT}"])
+    slip = np.isfinite(plain["incident: first slip"])
+    p, lo, hi = clopper_pearson(int(hit.sum()), len(plain))
+    print(f"Hs {SLIDE_HS}: brute force P({INCIDENT}) {p:.4g} [{lo:.4g}, {hi:.4g}] ({int(hit.sum())}/{len(plain)}; first slip "
+          f"{int(slip.sum())}); ISEE {est.p:.4g} [{est.lo:.4g}, {est.hi:.4g}] CoV {est.cov:.3f} ({est.n} samples)")
+    assert np.all(slip[hit]), "a slide without a slip"
+    assert not np.any(hit & (plain["isee_n"] == 0)), "a time-domain slide outside the sampling domain"
+    assert 0.01 < p < 0.2, "brute force outside the range where the comparison discriminates"
+    assert max(lo, est.lo) <= min(hi, est.hi), "the 95 % intervals do not overlap"

@@ -4,10 +4,10 @@ References
 ----------
 - MacCamy, R.C. & Fuchs, R.A. (1954), *Wave forces on piles: a diffraction theory*, Beach Erosion
   Board Tech. Memo 69: the closed-form horizontal force and the run-up (their Fig. 5.1).
-- Seed 000 (DTU thesis) §3.1–3.2 (eq. 3.13–3.23, run-up Fig. 3.4, 13 terms for ka ≤ 4 at 1e-6,
+- San Nicolás Méndez (2024) (DTU thesis) §3.1–3.2 (eq. 3.13–3.23, run-up Fig. 3.4, 13 terms for ka ≤ 4 at 1e-6,
   Fig. 3.5) and §4.1 (arc plate of 40° at d/a = 2, h/a = 4: closed form eq. 4.1–4.4 against a
   low-order panel method eq. 4.5, Figs. 4.4–4.5).
-- Seed 001 (TUHH) §2.4.1 eq. 2.37–2.44 (the same solution in exp(−iωt)).
+- Ferreira González (2023) (TUHH) §2.4.1 eq. 2.37–2.44 (the same solution in exp(−iωt)).
 """
 
 from __future__ import annotations
@@ -46,7 +46,7 @@ def cylinder_panels(a, h, n_theta, n_z, theta1=0.0, theta2=2 * math.pi):
 
 # ---------------------------------------------------------------------- truncation
 def test_truncation_rule_matches_seed_000():
-    """Seed 000 §3.2.1: 13 orders for ka = 4 at 1e-6 (elevation). The rule adds the velocity factor
+    """San Nicolás Méndez (2024) §3.2.1: 13 orders for ka = 4 at 1e-6 (elevation). The rule adds the velocity factor
     (1 + m/ka), one order more; and a longer series changes nothing beyond tol."""
     assert n_terms(4.0, 1e-6) == 14
     assert list(n_terms([0.5, 1.0, 2.0, 4.0, 8.0])) == [6, 8, 10, 14, 20]
@@ -83,7 +83,7 @@ def test_phase_convention_matches_synthesis():
 
 @pytest.mark.parametrize("ka", [0.5, 1.0, 2.0])
 def test_far_field_decays_like_inverse_sqrt_kr(ka):
-    """|η_s| √(kr) → the constant far-field amplitude (seed 000 eq. 3.17), upstream and to the side;
+    """|η_s| √(kr) → the constant far-field amplitude (San Nicolás Méndez 2024 eq. 3.17), upstream and to the side;
     so the total field tends to the incident one."""
     a = 1.0
     w = omega_for(ka, a)
@@ -103,8 +103,8 @@ def test_far_field_decays_like_inverse_sqrt_kr(ka):
 # ---------------------------------------------------------------------- wall: no flux, run-up, force
 @pytest.mark.parametrize("ka", [0.5, 1.0, 2.0, 4.0])
 def test_run_up_symmetric_and_no_flux(ka):
-    """Run-up |η(a, θ)| (MacCamy & Fuchs 1954 Fig. 5.1, seed 000 Fig. 3.4): symmetric about the
-    direction of travel; zero radial velocity on the wall (seed 000 eq. 3.8)."""
+    """Run-up |η(a, θ)| (MacCamy & Fuchs 1954 Fig. 5.1, San Nicolás Méndez 2024 Fig. 3.4): symmetric about the
+    direction of travel; zero radial velocity on the wall (San Nicolás Méndez 2024 eq. 3.8)."""
     a = 2.0
     w = omega_for(ka, a)
     th = np.linspace(0, 2 * np.pi, 361)[:-1]
@@ -118,7 +118,7 @@ def test_run_up_symmetric_and_no_flux(ka):
 
 
 def test_run_up_tends_to_one_for_long_waves():
-    """Long waves are barely disturbed: max |η(a, θ)| − 1 = O(ka) → 0 (seed 000 §3.2)."""
+    """Long waves are barely disturbed: max |η(a, θ)| − 1 = O(ka) → 0 (San Nicolás Méndez 2024 §3.2)."""
     a = 1.0
     th = np.linspace(0, 2 * np.pi, 181)
     dev = []
@@ -155,7 +155,7 @@ def test_closed_form_force_long_wave_limit():
 
 
 def test_panel_force_on_meshed_cylinder_converges():
-    """Panel integration (seed 000 eq. 4.5, pressure at centroids) of the total pressure on a meshed
+    """Panel integration (San Nicolás Méndez 2024 eq. 4.5, pressure at centroids) of the total pressure on a meshed
     cylinder → the closed-form force, second order in the panel size."""
     a, h = 1.0, 4.0
     for ka in (1.0, 4.0):
@@ -172,9 +172,9 @@ def test_panel_force_on_meshed_cylinder_converges():
         assert errs[3] < 0.005 and all(e0 / e1 > 3.5 for e0, e1 in zip(errs, errs[1:])), errs
 
 
-# ---------------------------------------------------------------------- arc plate (seed 000 §4.1)
+# ---------------------------------------------------------------------- arc plate (San Nicolás Méndez 2024 §4.1)
 def arc_panel_force(a, d, t1, t2, h, w, n, part):
-    """x-force ∫ p n_x dS on the arc plate from about n flat panels of aspect ≈ 1 (seed 000 eq. 4.5)."""
+    """x-force ∫ p n_x dS on the arc plate from about n flat panels of aspect ≈ 1 (San Nicolás Méndez 2024 eq. 4.5)."""
     n_theta = max(2, round(math.sqrt(n * d * (t2 - t1) / h)))
     nrm, area, c = cylinder_panels(d, h, n_theta, max(2, round(n / n_theta)), t1, t2)
     f = cylinder_field(c[:, 0], c[:, 1], c[:, 2], [w], [0.0], a, h, part=part)
@@ -183,7 +183,7 @@ def arc_panel_force(a, d, t1, t2, h, w, n, part):
 
 @pytest.mark.parametrize("centre_deg", [180.0, 0.0])  # in front of the pile (up-wave) and behind it
 def test_arc_plate_closed_form_against_panels(centre_deg):
-    """Seed 000 §4.1: 40° bottom-mounted arc at d/a = 2, h/a = 4; scattered and Froude–Krylov x-forces
+    """San Nicolás Méndez (2024) §4.1: 40° bottom-mounted arc at d/a = 2, h/a = 4; scattered and Froude–Krylov x-forces
     from the closed form (eq. 4.1–4.4) and from N flat panels converge as N grows (Figs. 4.4–4.5),
     faster for long waves."""
     a, d, h = 1.0, 2.0, 4.0
@@ -199,7 +199,7 @@ def test_arc_plate_closed_form_against_panels(centre_deg):
 
 
 def test_arc_plate_shelter():
-    """Behind the pile the scattered wave opposes the Froude–Krylov force (shelter, seed 000 Fig. 4.2):
+    """Behind the pile the scattered wave opposes the Froude–Krylov force (shelter, San Nicolás Méndez 2024 Fig. 4.2):
     |F⁰ + Fˢ| < |F⁰| for ka in [0.8, 4] behind (below, the difference is < 0.3 % either way);
     in front, long waves (ka < 1) are amplified."""
     a, d, h = 1.0, 2.0, 4.0
@@ -237,7 +237,7 @@ def test_paired_components_equal_grid():
 @pytest.mark.parametrize("ka", [0.01, 0.5, 4.0, 8.0])
 def test_recurrence_matches_scipy_hankel(ka):
     """Hankel functions by forward recurrence (module docstring) = scipy's H_m^(2) summed directly
-    (seed 000 eq. 3.23), near the wall and further out, incl. tiny ka (large Y_m)."""
+    (San Nicolás Méndez 2024 eq. 3.23), near the wall and further out, incl. tiny ka (large Y_m)."""
     from scipy import special
 
     a = 1.0

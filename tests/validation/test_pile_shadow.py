@@ -2,9 +2,9 @@
 
 References
 ----------
-- Seed 000 (DTU thesis) §5.1, Fig. 5.4: with the ship behind the cylinder (in its shadow) the
+- San Nicolás Méndez (2024) (DTU thesis) §5.1, Fig. 5.4: with the ship behind the cylinder (in its shadow) the
   scattered wave field lowers the heave and pitch RAOs for medium–long waves.
-- Seed 000 eq. 3.17: the scattered wave is a cylindrical wave, amplitude ∝ (kr)^(-1/2) far away.
+- San Nicolás Méndez (2024) eq. 3.17: the scattered wave is a cylindrical wave, amplitude ∝ (kr)^(-1/2) far away.
 """
 
 from __future__ import annotations
@@ -36,7 +36,7 @@ def ctv():
 def test_shadow_lowers_heave_and_pitch(ctv):
     """Bow 1 m off the pile, head seas (waves travel −x: the pile is up-wave, the vessel in its
     shadow): heave and pitch RAOs drop for medium–long waves (λ ≈ 17–40 m, ka ≈ 0.5–1.2), while
-    very long waves are unchanged (seed 000 §5.1, Fig. 5.4)."""
+    very long waves are unchanged (San Nicolás Méndez 2024 §5.1, Fig. 5.4)."""
     Xs = pile_scattered_excitation(ctv, (ref_x(1.0), 0.0), 0.0, A_PILE)
     w = ctv.omega
     R0 = np.abs(free_rao(ctv, w, [180.0])[:, 0])
@@ -52,7 +52,7 @@ def test_shadow_lowers_heave_and_pitch(ctv):
 
 def test_correction_fades_like_a_cylindrical_wave(ctv):
     """Moving the vessel from 20 to 80 pile diameters (bow-to-wall gap) divides the largest |X_s|
-    by √(r80/r20) ≈ 1.9 (the far field of seed 000 eq. 3.17); long waves (ω ≤ 0.5 rad/s) change X by
+    by √(r80/r20) ≈ 1.9 (the far field of San Nicolás Méndez 2024 eq. 3.17); long waves (ω ≤ 0.5 rad/s) change X by
     < 1 % of max |X| already at 20 D."""
     D = 2 * A_PILE
     Xn = {n: pile_scattered_excitation(ctv, (ref_x(n * D), 0.0), 0.0, A_PILE) for n in (20, 80)}

@@ -1,6 +1,6 @@
 """Time domain against frequency domain in irregular waves: the standard deviations of the stuck fender's
 contact forces in a JONSWAP sea equal the spectral integrals of the hinge-reaction transfer functions,
-:math:`\\sigma^2 = \\int_0^\\infty |\\hat J(\\omega)|^2 S(\\omega)\\,d\\omega` (seed 002 eq. 3.29–3.32) —
+:math:`\\sigma^2 = \\int_0^\\infty |\\hat J(\\omega)|^2 S(\\omega)\\,d\\omega` (Grøtting 2015 eq. 3.29–3.32) —
 the quantity the Wu screening is built on (boatland.freqdomain.screening).
 
 Time domain: scenarios/ctv24_landing.toml (ctv24, the first default, two contacts, 80 kN, head seas, Tp 7 s) with Hs 0.1 m

@@ -1,4 +1,4 @@
-"""Measured wave records (seed 001 §5.2.3): CSV reading, FFT components, exact replay, bad files."""
+"""Measured wave records (Ferreira González 2023 §5.2.3): CSV reading, FFT components, exact replay, bad files."""
 
 import math
 

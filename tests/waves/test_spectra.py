@@ -1,7 +1,7 @@
 """Dispersion, JONSWAP / PM / TMA spectra and cos-2s spreading against their definitions.
 
-References: dispersion ω² = g k tanh kh (seed 001 eq. 2.29); JONSWAP (seed 000 eq. 3.34–3.36, seed 003
-eq. 30–31); TMA (Bouws et al. 1985, Kitaigorodskii et al. 1975); spreading (seed 003 eq. 33).
+References: dispersion ω² = g k tanh kh (Ferreira González 2023 eq. 2.29); JONSWAP (San Nicolás Méndez 2024 eq. 3.34–3.36, Sin Mon 2021
+eq. 30–31); TMA (Bouws et al. 1985, Kitaigorodskii et al. 1975); spreading (Sin Mon 2021 eq. 33).
 """
 
 import math
@@ -77,7 +77,7 @@ def test_normalisation_other_widths(sigma_a, sigma_b):
 
 
 def test_normalisation_against_seed_approximation():
-    """Seed 000's A_γ = 1 − 0.287 ln γ approximates the exact factor within 0.3 % for γ ≤ 5."""
+    """San Nicolás Méndez (2024)'s A_γ = 1 − 0.287 ln γ approximates the exact factor within 0.3 % for γ ≤ 5."""
     for gamma in (1.0, 2.0, 3.3, 5.0):
         assert abs(jonswap_normalisation(gamma) / (1 - 0.287 * math.log(gamma)) - 1) < 3e-3
     assert jonswap_normalisation(1.0) == 1.0
@@ -150,7 +150,7 @@ def test_bin_variances_integrate_the_spectrum():
 def test_spreading_is_a_normalised_density(s):
     D = lambda th: float(spreading_cos2s(th, 0.3, s))  # noqa: E731
     assert integrate.quad(D, 0.3 - math.pi, 0.3 + math.pi, **QUAD)[0] == pytest.approx(1.0, rel=1e-12)
-    # seed 003 eq. 33 writes the constant as 2^(2s−1)/π Γ²(s+1)/Γ(2s+1)
+    # Sin Mon 2021 eq. 33 writes the constant as 2^(2s−1)/π Γ²(s+1)/Γ(2s+1)
     seed = 2 ** (2 * s - 1) / math.pi * special.gamma(s + 1) ** 2 / special.gamma(2 * s + 1)
     assert spreading_constant(s) == pytest.approx(seed, rel=1e-12)
     # the mean resultant length of cos-2s is s/(s+1) (Longuet-Higgins et al. 1963)
