@@ -62,6 +62,7 @@ from pathlib import Path
 import numpy as np
 from scipy.special import ndtri
 
+from boatland.campaign.labels import campaign_inputs
 from boatland.campaign.plan import Campaign
 from boatland.campaign.executor import Executor, check_scheduler_address
 from boatland.campaign.plan import plan_json
@@ -487,6 +488,7 @@ def run_isee(campaign: Campaign, store_path: str | Path, *, loaders, executor: s
         "campaign_file": Path(campaign.source).read_text(encoding="utf-8"),
         "plan": plan_json(campaign), "n_trials": len(campaign.cases) * MAX_LEVELS * MAX_SAMPLES,
         "incidents": "\n".join(names), "method": "isee", "isee": json.dumps(asdict(s)),
+        "inputs": json.dumps(campaign_inputs(campaign), default=float),   # for the report's inputs and titles
     }
     if executor == "dask":
         check_scheduler_address(scheduler)

@@ -168,6 +168,8 @@ def _isee(args, campaign, store, where, worst_dir) -> int:
 
     from tqdm import tqdm
 
+    import numpy as np
+
     from boatland.campaign.isee import run_isee
     from boatland.freqdomain.statistics import ACCESS_DURATION, DEFAULT_STATISTICS, risk_in_words
     from boatland.campaign.report import write_report
@@ -225,10 +227,21 @@ def _isee(args, campaign, store, where, worst_dir) -> int:
               f"P(first slip): linear {r['linear first slip: P']:.3g}, screening ({stat}) {r['screening ' + stat]:.3g}")
     if "isee_limits" in data:
         for L in data["isee_limits"]:
-            print(f"  case {L['case']} ({L['label'].decode() or 'base'}): limiting Hs {L['limiting Hs']:.4g} m "
-                  f"[{L['limiting Hs lo']:.4g}, {L['limiting Hs hi']:.4g}] for P({inc}) = {L['accept']:g}; onset "
-                  f"limits: the linear model's {onset} {L['linear limiting Hs']:.4g} m, the screening's first slip "
-                  f"({stat}) {L['screening ' + stat + ' Hs']:.4g} m")
+            c = int(L["case"])
+            if np.isfinite(L["limiting Hs"]):
+                found = (f"limiting Hs {L['limiting Hs']:.4g} m [{L['limiting Hs lo']:.4g}, "
+                         f"{L['limiting Hs hi']:.4g}] for P({inc}) = {L['accept']:g}")
+            else:                                  # no level saw the incident: say how far it looked
+                mine = runs[runs["case"] == c]
+                top = mine[np.argmax(mine["hs"])] if mine.size else None
+                found = (f"no limiting Hs for P({inc}) = {L['accept']:g}: no {inc} in {int(mine['samples'].sum())} "
+                         f"samples" + (f" up to Hs {top['hs']:.4g} m, where P(first slip) = "
+                                       f"{top['linear first slip: P']:.2g} (the importance sampling of the first "
+                                       "slip gains nothing where it is near-certain: a Monte Carlo campaign there "
+                                       "bounds it)" if top is not None else ""))
+            print(f"  case {c} ({L['label'].decode() or 'base'}): {found}; onset limits: the linear model's {onset} "
+                  f"{L['linear limiting Hs']:.4g} m, the screening's first slip ({stat}) "
+                  f"{L['screening ' + stat + ' Hs']:.4g} m")
         print(f"  accepted: {risk_in_words(float(data['isee_limits'][0]['accept']), campaign.access or ACCESS_DURATION)}")
     if worst_dir is not None:
         _save_worst(campaign, data["trials"], worst_dir, args.save_worst, inc)

@@ -34,8 +34,8 @@ def add_parser(sub) -> None:
     scenario_argument(screen)
     screening_options(screen)
     screen.add_argument("--tp", type=positive("s", 1e4), nargs="+", metavar="S",
-                        help="peak periods: MIN MAX N, N from MIN to MAX [s] (default 3 18 16); with --sensitivity "
-                             "one period TP (default the scenario's Tp, else 7)")
+                        help="peak periods: one period TP, or MIN MAX N: N from MIN to MAX [s] (default 3 18 16); with "
+                             "--sensitivity one period TP (default the scenario's Tp, else 7)")
     screen.add_argument("--directions", type=integer(1, 3600), metavar="N",
                         help="N relative directions over 360° (default 8: every 45°; with --sensitivity head 180°, "
                              "bow-quartering 135° and beam 90°)")
@@ -64,6 +64,7 @@ def cmd(args) -> int:
     import numpy as np
 
     from boatland.freqdomain import screening_grid
+    from boatland.freqdomain.statistics import one_in, risk_in_words
 
     freq_check(args)
     if args.sensitivity:
@@ -77,9 +78,10 @@ def cmd(args) -> int:
         args.tp = [3.0, 18.0, 16]
     if args.directions is None:
         args.directions = 8
+    if len(args.tp) == 1:                        # one period: --tp 7 is --tp 7 7 1
+        args.tp = [args.tp[0], args.tp[0], 1]
     if len(args.tp) != 3:
-        raise BoatlandInputError(f"--tp {' '.join(f'{t:g}' for t in args.tp)}: give MIN MAX N (one period only with "
-                                 "--sensitivity)")
+        raise BoatlandInputError(f"--tp {' '.join(f'{t:g}' for t in args.tp)}: give one period TP, or MIN MAX N")
     lo, hi, n = args.tp
     if not (0 < lo <= hi and n >= 1 and n == int(n)):
         raise BoatlandInputError(f"--tp {lo:g} {hi:g} {n:g}: need 0 < MIN ≤ MAX and a whole N ≥ 1")
@@ -122,16 +124,18 @@ def cmd(args) -> int:
                             for m, sg, c in zip(own.names[:-1], own.sigma, own.capacity[:-1])}}
         print_json(out)
     else:
-        print(f"{scenario.name}: limiting Hs [m] for P_acc = {table.accept:g} per {args.access:g} s access "
-              f"({table.statistics}, {table.method} hinge; μ = {mu:g}, F_b = {thrust / 1e3:g} kN, "
-              f"θ_max = {setup.roll_limit_deg:g}°); rows Tp, columns relative direction (180 = head seas)")
+        print(f"{scenario.name}: limiting Hs [m] of a slip onset (or roll beyond {setup.roll_limit_deg:g}°) at the "
+              f"accepted {risk_in_words(table.accept, args.access)} ({table.statistics}, {table.method} hinge; "
+              f"μ = {mu:g}, F_b = {thrust / 1e3:g} kN); rows Tp, columns relative direction (180 = head seas)")
         print(table.text())
         modes, counts = np.unique(table.governing[np.isfinite(table.Hs)], return_counts=True)
         print("governing: " + ", ".join(f"{m} {c}" for m, c in zip(modes, counts)))
         if own is not None:
             r = own
             print(f"the scenario's own sea ({', '.join(f'Hs {p.Hs:g} m Tp {p.Tp:g} s' for p in parts)}): incident "
-                  f"probability {r.p_access:.3g} per access ({r.p_cycle:.3g} per {r.cycle_period:g} s cycle); "
+                  f"probability {r.p_access:.3g} per access — {one_in(r.p_access)}, "
+                  f"{'above' if r.p_access > table.accept else 'within'} the accepted {one_in(table.accept)} "
+                  f"({r.p_cycle:.3g} per {r.cycle_period:g} s cycle); "
                   "σ of the margins " + ", ".join(f"{m} {s / 1e3:.3g} kN" for m, s in zip(r.names[:-1], r.sigma))
                   + "; capacities " + ", ".join(f"{a / 1e3:.3g} kN" for a in r.capacity[:-1]))
         if table.captured.min() < 0.99:
@@ -161,6 +165,7 @@ def _shear_sweep(args, scenario, db, setup, beta, sea, depth) -> int:
     import numpy as np
 
     from boatland.freqdomain.screening import shear_sweep
+    from boatland.freqdomain.statistics import risk_in_words
 
     sw = shear_sweep(db, setup, args.shear_sweep, beta, accept=args.accept, statistics=args.statistics,
                      method=args.method, sea=sea, water_depth=depth, access_duration=args.access, mu=args.mu,
@@ -172,8 +177,8 @@ def _shear_sweep(args, scenario, db, setup, beta, sea, depth) -> int:
                           "Hs_limit": [[None if not np.isfinite(h) else float(h) for h in row] for row in sw.Hs],
                           "governing": sw.governing.tolist()}, indent=2))
     else:
-        print(f"{scenario.name}: limiting Hs [m] at Tp = {sw.Tp:g} s for P_acc = {sw.table.accept:g} per "
-              f"{args.access:g} s access ({sw.table.statistics}) against the fender's shear stiffness per contact "
+        print(f"{scenario.name}: limiting Hs [m] at Tp = {sw.Tp:g} s at the accepted "
+              f"{risk_in_words(sw.table.accept, args.access)} ({sw.table.statistics}) against the fender's shear stiffness per contact "
               f"(the scenario's: {'rigid' if not np.isfinite(setup.shear_stiffness) else f'{setup.shear_stiffness:.3g} N/m'}"
               "); rows k_t, columns relative direction (180 = head seas)")
         print(sw.text())
@@ -206,7 +211,7 @@ def _sensitivity(args) -> int:
         plot_tornado,
         sensitivity,
     )
-    from boatland.freqdomain.statistics import access_text
+    from boatland.freqdomain.statistics import access_text, risk_in_words
 
     if args.shear_sweep is not None:
         raise BoatlandInputError("--sensitivity and --shear-sweep: choose one")
@@ -255,6 +260,7 @@ def _sensitivity(args) -> int:
         print(f"{scenario.name}: limiting Hs [m] at Tp {Tp:g} s, one input at a time at the ends of its range "
               f"(base: {result.base_text}; per {access_text(args.access)}, {result.statistics}, {result.method} hinge); "
               "per heading: the limit at the low – high end (× the base)")
+        print(f"accepted at the base: {risk_in_words(result.accept, args.access)}")
         print(result.text())
     if args.output:
         plot_tornado(result, args.output, title=f"{scenario.name} ({db.name}, {_sea_shape(scenario)}): limiting Hs "

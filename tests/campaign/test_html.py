@@ -344,6 +344,14 @@ def test_isee_page(isee_stores, tmp_path, incident):
         assert cells[5] == g(r[f"{incident}: CoV"], 2)
         if incident == ONSET:
             assert cells[6:] == [g(r["linear first slip: P"]), g(r[f"screening {DEFAULT_STATISTICS}"])]
+    # what moves the limit: the campaign's own sensitivity (stored beside its samples); a slide or slip incident's
+    # limits join it as the incident definition's row, each heading's value as the store has it
+    sens = page.text["sensitivity"]
+    found = [float(L["limiting Hs"]) for L in lim if math.isfinite(L["limiting Hs"])]
+    assert "bollard push" in sens and "sensitivity_tornado.png" in [f.name for f in files]
+    assert found and ("incident definition" in sens) == (incident != ONSET)
+    if incident != ONSET:
+        assert all(f"{h:.2f}" in sens for h in found)
     # the tables of the report name the incident of every column likewise
     md = (tmp_path / "isee_limits.md").read_text(encoding="utf-8")
     assert f"limiting Hs [m] ({incident})" in md and f"screening Rayleigh [m] ({ONSET})" in md

@@ -2,6 +2,7 @@
 a real Dask cluster, resume after SIGKILL, the limiting-Hs search, the report, the heaviest samples'
 run logs, bad input. Real processes throughout (boatland CLI, dask scheduler and workers)."""
 
+import html
 import math
 import subprocess
 import sys
@@ -179,3 +180,42 @@ def test_save_worst_needs_isee(tmp_path):
     camp.write_text(f'name = "mc"\nscenario = "{BASE}"\nseeds = 2\nduration = 10.0\n')
     r = run("campaign", camp, "-o", tmp_path / "mc.h5", "--save-worst", "3")
     assert r.returncode == 2 and "--save-worst" in r.stderr and "Traceback" not in r.stderr
+
+
+@pytest.mark.parametrize("method", ["monte-carlo", "isee"])
+def test_the_operators_slide_incident_runs_and_is_reported(tmp_path, method):
+    """The default scenario's ``slide > 0.5 m within 120 s`` (one operator's criterion) through a Monte Carlo
+    and a rare-event campaign, in a beam sea where the fender slides: a column of the store, a share of the
+    accesses with a slide (a slide starts with a slip: never more than the first slip's), and its name in the
+    report's table and page."""
+    name = "slide > 0.5 m within 120 s"
+    camp = tmp_path / "slide.toml"
+    camp.write_text(f"""
+name = "slide"
+scenario = "{REPO / 'scenarios' / 'ctv_landing.toml'}"
+method = "{method}"
+master_seed = 3
+duration = 150.0
+{"seeds = 12" if method == "monte-carlo" else ""}
+[set]
+"sea.Hs" = 0.8
+"sea.Tp" = 7.0
+"sea.relative_direction_deg" = 90.0
+{'''[isee]
+incident = "slide > 0.5 m within 120 s"
+batch = 6
+min_samples = 12
+max_samples = 12''' if method == "isee" else ""}
+""")
+    r = run("campaign", camp, "-o", tmp_path / "s.h5", "--report", tmp_path / "rep")
+    assert r.returncode == 0, r.stderr
+    from boatland.campaign.report import read_store
+
+    data = read_store(tmp_path / "s.h5")
+    assert name in data["header"]["incidents"].split("\n")
+    stats = data["stats"]
+    p, onset = float(stats[f"{name}: P"][0]), float(stats["first slip: P"][0])
+    assert 0.0 < p <= onset
+    page = (tmp_path / "rep" / "report.html").read_text(encoding="utf-8")
+    table = (tmp_path / "rep" / ("isee_runs.md" if method == "isee" else "cases.md")).read_text(encoding="utf-8")
+    assert name in table and html.escape(name) in page

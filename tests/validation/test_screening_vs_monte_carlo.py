@@ -6,7 +6,8 @@ Time domain: campaigns of 24 wave seeds per case (:func:`boatland.campaign.run_c
 workers), 30 min of full sea after the settling and the waves' start-up ramp; the incident is the first
 stick → slip of either contact (a slip during the ramp counts at the start of the access). Frequency
 domain: the screening each campaign stores beside its cases (Wu 2014 as Grøtting 2015 §3.2.1/§3.4
-with Rayleigh peaks per Tp cycle; each contact's own margins, the same contacts, pile diffraction and
+with Rice's up-crossings, the default since 2026-12-02 — Rayleigh's one peak per Tp sat below all six time-domain
+probabilities; each contact's own margins, the same contacts, pile diffraction and
 preload as the time domain; margins correlated at ρ ≥ 0.99 counted once —
 :func:`boatland.freqdomain.statistics.distinct_events`). The check of issue 13: at two Hs per heading
 where the time domain's P lies in 0.1–0.9, the screening's P lies inside the Clopper–Pearson 95 %
