@@ -48,9 +48,11 @@ from boatland.campaign.stats import (
     limiting_hs_interval,
     seeds_for_width,
 )
+from boatland.freqdomain.statistics import one_in, probability_text
 from boatland.trial.incidents import FirstSlip
 
-__all__ = ["DEFAULT_WIDTH", "ONSET", "SCREENING_NOTE", "Cell", "Decision", "Section", "decision", "other_estimates"]
+__all__ = ["DEFAULT_WIDTH", "ONSET", "SCREENING_NOTE", "Cell", "Decision", "Section", "decision", "other_estimates",
+           "p_text"]
 
 #: The incident the frequency-domain screening predicts: the slip onset, "first slip".
 ONSET = FirstSlip().name
@@ -78,8 +80,17 @@ def other_estimates(stats: np.ndarray, incident: str) -> dict[str, tuple[np.ndar
     return out
 
 
-def _p(v: float) -> str:
-    return "–" if v is None or not math.isfinite(v) else f"{v:.2f}"
+def p_text(v: float) -> str:
+    """A probability in a table: two decimals, below 0.01 three significant figures (``2.69e-3``: a rare
+    incident is not "0.00"), below 1e-6 "< 1e-6", "–" when unknown."""
+    if v is None or not math.isfinite(v):
+        return "–"
+    if 0 < v < 1e-6:
+        return "< 1e-6"
+    return probability_text(v) if 0 < v < 0.01 else f"{v:.2f}"
+
+
+_p = p_text
 
 
 @dataclass(frozen=True)
@@ -190,7 +201,7 @@ class Decision:
     def advice(self) -> str:
         """How many seeds per case an interval of the asked width needs near the target."""
         have = f"{self.seeds} seed{'s' if self.seeds != 1 else ''} per case: the {100 * self.confidence:g} % " \
-               f"intervals of P are up to {self.widest:.2f} wide"
+               f"intervals of P are up to {p_text(self.widest)} wide"
         if self.seeds_needed is None:
             return have + f"; an interval of {self.width:g} at P ≈ {self.target:g} needs more than 100000 seeds"
         if self.seeds_needed <= self.seeds:
@@ -223,7 +234,7 @@ class Decision:
                                    if (r, c) in section.cells else "–"
                                    for c in section.columns])
         if section.limits:
-            body.append([f"limiting Hs at P = {self.target:g}"]
+            body.append([f"limiting Hs at P = {self.target:g} ({one_in(self.target)})"]
                         + [section.limits[c].text() if c in section.limits else "–" for c in section.columns])
         if markdown:
             return ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)] + ["| " + " | ".join(b) + " |" for b in body]

@@ -474,7 +474,7 @@ def _decision_table(dec: Decision, s) -> str:
         rows.append(row)
         attrs.append(at)
     if s.limits:
-        rows.append([f"limiting Hs at P = {dec.target:g}"] + [s.limits[c].text() if c in s.limits else "–"
+        rows.append([f"limiting Hs at P = {dec.target:g} ({one_in(dec.target)})"] + [s.limits[c].text() if c in s.limits else "–"
                                                               for c in s.columns])
         attrs.append([""] * len(rows[-1]))
     return _table(head, rows, limit_last=bool(s.limits), cell_attrs=attrs)

@@ -43,7 +43,7 @@ from pathlib import Path
 
 import numpy as np
 
-from boatland.campaign.decision import DEFAULT_WIDTH, ONSET, Decision, decision
+from boatland.campaign.decision import DEFAULT_WIDTH, ONSET, Decision, decision, p_text
 from boatland.campaign.html import (
     figure_sensitivity,
     isee_page,
@@ -334,10 +334,11 @@ def _cases_tables(stats, names, axes, dec: Decision, out):
         ok = int(r["trials"]) - int(r["failed"])
         row = [str(int(r["case"])), *[value_text(a, float(r[f"axis: {a}"]), short=True) for a in axes],
                f"{ok}" + (f" (+{int(r['failed'])} failed)" if r["failed"] else "")]
-        ps = [f"{int(r[f'{n}: count'])}/{ok} = {r[f'{n}: P']:.2f} [{r[f'{n}: P lo']:.2f}, {r[f'{n}: P hi']:.2f}]"
+        ps = [f"{int(r[f'{n}: count'])}/{ok} = {p_text(r[f'{n}: P'])} [{p_text(r[f'{n}: P lo'])}, "
+              f"{p_text(r[f'{n}: P hi'])}]"
               if ok else "–" for n in names]
         fd = float(r["screening: P(slip)"])
-        row += [*ps[:at], f"{fd:.2f}" if math.isfinite(fd) else (_fmt(r["screening: note"]) or "–"), *ps[at:]]
+        row += [*ps[:at], p_text(fd) if math.isfinite(fd) else (_fmt(r["screening: note"]) or "–"), *ps[at:]]
         i = dec.incident
         row.append(_mean_text(float(r[f"{i}: mean time"]), float(r[f"{i}: mean lo"]), float(r[f"{i}: mean hi"])))
         rows.append(row)

@@ -171,7 +171,7 @@ def _isee(args, campaign, store, where, worst_dir) -> int:
     import numpy as np
 
     from boatland.campaign.isee import run_isee
-    from boatland.freqdomain.statistics import ACCESS_DURATION, DEFAULT_STATISTICS, risk_in_words
+    from boatland.freqdomain.statistics import ACCESS_DURATION, DEFAULT_STATISTICS, one_in, risk_in_words
     from boatland.campaign.report import write_report
     from boatland.cli.common import compile_notice
     from boatland.checks.files import load, resolve_database
@@ -183,7 +183,7 @@ def _isee(args, campaign, store, where, worst_dir) -> int:
         def progress(done, total):
             if not bar:
                 print(f"campaign {campaign.name} (isee): {len(campaign.cases)} cases, incident {s.incident!r}, target "
-                      f"CoV {s.target_cov:g}" + (f", limiting Hs at P = {s.accept:g}" if s.accept is not None else "")
+                      f"CoV {s.target_cov:g}" + (f", limiting Hs at P = {s.accept:g} ({one_in(s.accept)})" if s.accept is not None else "")
                       + f" on {where} → {store}", file=sys.stderr)
                 compile_notice()
                 bar.append(stack.enter_context(tqdm(total=total, unit="sample", file=sys.stderr, disable=None,

@@ -16,10 +16,10 @@ from pathlib import Path
 
 import pytest
 
-from boatland.campaign.decision import ONSET, SCREENING_NOTE, decision
+from boatland.campaign.decision import ONSET, SCREENING_NOTE, decision, p_text
 from boatland.campaign.labels import axis_label, inputs_from_header, value_text
 from boatland.campaign.report import read_store, write_report
-from boatland.freqdomain.statistics import DEFAULT_STATISTICS, risk_in_words
+from boatland.freqdomain.statistics import DEFAULT_STATISTICS, one_in, risk_in_words
 
 pytestmark = pytest.mark.slow        # small campaigns run for the pages: not in the quick loop
 
@@ -148,7 +148,7 @@ slip_distance = [0.1]
     return tmp / "active.h5"
 
 
-CELL = re.compile(r"^(\d\.\d\d) \[(\d\.\d\d), (\d\.\d\d)\](?: \(screening (\d\.\d\d)\))?$")
+CELL = re.compile(r"^([\d.e-]+) \[([\d.e-]+), ([\d.e-]+)\](?: \(screening ([\d.e-]+)\))?$")
 
 
 def md_rows(path: Path) -> list[list[str]]:
@@ -196,16 +196,16 @@ def test_monte_carlo_page(active_store, tmp_path, incident, target):
             assert head[j] == value_text("sea.relative_direction_deg", float(s["axis: sea.relative_direction_deg"]))
             m = CELL.match(text)
             assert m, text
-            assert m.group(1, 2, 3) == tuple(f"{float(s[f'{inc}: {k}']):.2f}" for k in ("P", "P lo", "P hi"))
+            assert m.group(1, 2, 3) == tuple(p_text(float(s[f'{inc}: {k}'])) for k in ("P", "P lo", "P hi"))
             if inc == ONSET:
-                assert m.group(4) == f"{float(s['screening: P(slip)']):.2f}"
+                assert m.group(4) == p_text(float(s['screening: P(slip)']))
             else:
                 assert m.group(4) is None
             n = int(s["trials"]) - int(s["failed"])
             assert attrs["title"] == f"{int(s[f'{inc}: count'])} of {n} trials"
     assert seen == {int(c) for c in stats["case"]}
     limit = table[-1]
-    assert limit[0][2] == f"limiting Hs at P = {target:g}"
+    assert limit[0][2] == f"limiting Hs at P = {target:g} ({one_in(target)})"
     assert [t for _, _, t in limit[1:]] == [dec.sections[0].limits[c].text() for c in dec.sections[0].columns]
     # the same table as decision.md, cell for cell
     assert [[t for _, _, t in row] for row in table] == md_rows(tmp_path / "decision.md")

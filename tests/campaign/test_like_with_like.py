@@ -9,7 +9,7 @@ import math
 import numpy as np
 import pytest
 
-from boatland.campaign.decision import ONSET, SCREENING_NOTE, decision
+from boatland.campaign.decision import ONSET, SCREENING_NOTE, decision, p_text
 from boatland.campaign.report import (
     figure_p_vs_hs,
     read_store,
@@ -45,7 +45,7 @@ def test_the_screening_stands_beside_first_slip_only():
     onset, slip = decision(data, ONSET), decision(data, SLIP)
     assert onset.screening_beside and not slip.screening_beside
     for case, (hs, scr) in enumerate(zip((0.5, 1.0), (0.31, 0.87))):
-        assert onset.sections[0].cells[(hs, ())].text(screening=True).endswith(f"(screening {scr:.2f})")
+        assert onset.sections[0].cells[(hs, ())].text(screening=True).endswith(f"(screening {p_text(scr)})")
         assert "screening" not in slip.table_lines(slip.sections[0], markdown=True)[2 + case]
     # each table's legend names its incident; the slip distance's says why the screening is not there
     assert f"P({ONSET} within the access)" in onset.legend() and "screening" in onset.legend()
@@ -79,7 +79,7 @@ def test_report_tables_name_the_incident_of_every_column(small_store, tmp_path):
     stats = data["stats"]
     names = data["header"]["incidents"].split("\n")
     assert ONSET in names and SLIP in names
-    screening = [f"{v:.2f}" for v in stats["screening: P(slip)"]]
+    screening = [p_text(v) for v in stats["screening: P(slip)"]]
     for inc in (SLIP, ONSET):
         out = tmp_path / inc.replace(" ", "_").replace(">", "gt")
         write_report(store, out, incident=inc, figures=False)

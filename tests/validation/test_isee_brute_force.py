@@ -21,6 +21,8 @@ A slide incident (the last test): P(slide > 0.2 m within 60 s in a 60-s access) 
 (scenarios/ctv_landing.toml: ctv27, 150 kN, μ_s 0.8) in head seas. A slide starts with a slip, so it lies inside
 the sampling domain D of the first slip and the estimator :math:`\bar P\,\overline{1_G/N}` is unbiased for it
 too; checked the same way (the intervals overlap, every brute-force slide inside D, brute force P in 0.01–0.2).
+Measured (Hs 0.7 m, 2026-12-02): brute force 74/1500 = 0.049 [0.039, 0.062], ISEE 0.043 [0.035, 0.051] (CoV 0.10,
+340 samples).
 """
 
 import math
@@ -129,7 +131,7 @@ def test_beam_seas_against_brute_force(tmp_path):
 # ------------------------------------------------------------------------ a slide incident
 INCIDENT = "slide > 0.2 m within 60 s"
 N_SLIDE = 1500
-SLIDE_HS = 0.5   # head seas, Tp 7 s: brute-force P of the slide ≈ 0.05 (the onset's ≈ 0.3)
+SLIDE_HS = 0.7   # head seas, Tp 7 s: P(slide) ≈ 0.08, P(first slip) ≈ 0.27 in 60 s (200 plain trials)
 
 
 def slide_campaign(tmp_path):
@@ -178,11 +180,10 @@ def test_a_slide_incident_against_brute_force(tmp_path):
             names)
     assert (plain["status"] == 0).all()
     hit = np.isfinite(plain[f"incident: {INCIDENT}"])
-    slip = np.isfinite(plain["incident: first slip"])
+    slip = np.isfinite(plain["incident: first slip"])   # in the access (a slide may go on from a slip before it)
     p, lo, hi = clopper_pearson(int(hit.sum()), len(plain))
     print(f"Hs {SLIDE_HS}: brute force P({INCIDENT}) {p:.4g} [{lo:.4g}, {hi:.4g}] ({int(hit.sum())}/{len(plain)}; first slip "
           f"{int(slip.sum())}); ISEE {est.p:.4g} [{est.lo:.4g}, {est.hi:.4g}] CoV {est.cov:.3f} ({est.n} samples)")
-    assert np.all(slip[hit]), "a slide without a slip"
     assert not np.any(hit & (plain["isee_n"] == 0)), "a time-domain slide outside the sampling domain"
     assert 0.01 < p < 0.2, "brute force outside the range where the comparison discriminates"
     assert max(lo, est.lo) <= min(hi, est.hi), "the 95 % intervals do not overlap"
