@@ -80,9 +80,9 @@ def test_a_case_that_cannot_be_prepared_runs_as_before(mini, tmp_path, monkeypat
     run_campaign(campaign, tmp_path / "all.h5", loaders=LOADERS, workers=1)
     real = sim.pile_tables
 
-    def refuse_case_2(setup):                                       # Hs 0.6 m, head seas
+    def refuse_case_2(setup):                                       # Hs 0.8 m, head seas
         sea = setup.scenario.document["sea"]
-        if (sea["Hs"], sea["relative_direction_deg"]) == (0.6, 180.0):
+        if (sea["Hs"], sea["relative_direction_deg"]) == (0.8, 180.0):
             raise RuntimeError("cannot prepare")
         return real(setup)
 
