@@ -11,8 +11,9 @@ Contents, in this order:
    (:func:`boatland.freqdomain.statistics.risk_in_words`);
 4. the decision table, the same numbers as ``decision.md`` (:class:`boatland.campaign.decision.Decision`)
    — for a rare-event (ISEE) store the limiting Hs per case with its interval and the per-run estimates;
-5. sensitivity: the study given (:func:`sensitivity_items`) as a table and a tornado figure, or how to
-   get it;
+5. sensitivity: what moves the limit — the study given, by default the campaign's own, computed beside its
+   trials and kept in the store (:func:`boatland.campaign.report.store_sensitivity`) — as a table and a
+   tornado figure (:func:`sensitivity_items`), or how to get it;
 6. the report's figures.
 
 Like with like: the frequency-domain screening predicts slip onsets, so its figures stand beside the

@@ -30,7 +30,8 @@ access (:data:`HS_PUSH_ON`) as a dashed reference.
 
 ``docs/sensitivity_tornado.png`` was drawn by::
 
-    boatland screen --sensitivity -o docs/sensitivity_tornado.png
+    boatland campaign scenarios/campaigns/ctv_slide_limits.toml -o ctv_slide_limits.h5
+    boatland screen --sensitivity --limits ctv_slide_limits.h5 -o docs/sensitivity_tornado.png
 
 (the packaged ``ctv_landing``: ctv27, push 150 kN, μ_s 0.8, Tp 7 s, headings 180°, 135°, 90°).
 
@@ -247,12 +248,12 @@ class SensitivityRow:
         """``"0.25–0.75 (×0.67–×2.00)"`` at heading ``j``: the limit at the low and high ends, and as multiples
         of the base."""
         def hs(x):
-            return "–" if math.isnan(x) else (f">{HS_MAX:g}" if math.isinf(x) else f"{x:.2f}")
+            return "n/a" if math.isnan(x) else (f">{HS_MAX:g}" if math.isinf(x) else f"{x:.2f}")
 
         def times(x):
             b = self.base[j]
             if math.isnan(x) or not (np.isfinite(b) and b > 0):
-                return "–"
+                return "n/a"
             return "×∞" if math.isinf(x) else f"×{x / b:.2f}"
         if math.isnan(self.low[j]) and math.isnan(self.high[j]):
             return "–"
@@ -630,6 +631,9 @@ def figure_tornado(result: Sensitivity, *, title: str = ""):
             hatch = "//" if r.factor == "all" else None
             ends = sorted(((r.low[j], light), (r.high[j], dark)),       # the longer bar first: both stay seen
                           key=lambda e: -abs(e[0] - base) if np.isfinite(e[0] - base) else -math.inf)
+            if np.isfinite(base) and any(math.isnan(v) for v in (r.low[j], r.high[j])):
+                ax.text(base, y, "  not found at this heading" if r.factor not in FACTOR_KEYS else "  n/a",
+                        fontsize=6.5, va="center", color="0.3", style="italic")   # not "no effect": unknown
             for value, shade in ends:
                 if math.isnan(value) or not np.isfinite(base):
                     continue
