@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from boatland.cli.guard import Output, check_outputs, in_range
+from boatland.cli.guard import Output, accept_arg, check_outputs, in_range
 
 __all__ = ["add_parser", "cmd"]
 
@@ -26,9 +26,11 @@ def add_parser(sub) -> None:
     rep.add_argument("-o", "--output", type=Path, default=Path("report"), help="folder (default: ./report)")
     rep.add_argument("--incident", help="incident definition of the decision table, limiting Hs and figures "
                                         "(default: the first slip-distance definition; an isee store: its own)")
-    rep.add_argument("--target", type=in_range(0.0, 1.0, hi_open=True), default=0.1,
-                     help="accepted probability of the incident within the access, for the limiting Hs; report.html "
-                          "states it in words (default 0.1; an isee store has its own, [isee] accept)")
+    rep.add_argument("--target", type=accept_arg, default=0.1, metavar="P",
+                     help="accepted probability of the incident within the access, for the limiting Hs: in (0, 1) or a "
+                          "preset of Grøtting (2015) Table 2.1 (best = 1.19e-3, conservative, non-conservative); "
+                          "report.html states it in words (default 0.1, what a campaign of tens of seeds resolves; an "
+                          "isee store has its own, [isee] accept)")
     rep.add_argument("--width", type=in_range(0.0, 1.0, hi_open=True), default=0.2,
                      help="width asked of the 95 %% interval of P near the target: the report says how many seeds "
                           "per case that needs (default 0.2, i.e. ±0.1)")
