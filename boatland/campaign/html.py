@@ -520,7 +520,7 @@ def isee_page(data: dict, incident: str, *, store: Path | None = None, figures: 
            f"{settings.get('min_samples', '?')}–{settings.get('max_samples', '?')} samples per run, "
            f"up to {settings.get('levels', '?')} Hs levels, settle {settings.get('settle', '?')} s")
     extra = [("ISEE", how)]
-    if access is not None:
+    if access is not None and "inputs" not in data["header"]:      # else the inputs say it
         extra.append(("access", f"{float(access):g} s of full waves per sample"))
     risk = [_incident_line(incident)]
     if accept is not None:

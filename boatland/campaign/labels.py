@@ -87,7 +87,8 @@ def campaign_inputs(campaign) -> dict:
     out.pop("seed", None)
     access = campaign.access if campaign.access is not None else base.simulation.duration - exposure_start(base)
     out.update({"campaign": campaign.name, "description": getattr(campaign, "description", ""),
-                "seeds": campaign.seeds, "access": access, "axes": list(campaign.axes)})
+                "seeds": campaign.seeds if campaign.method != "isee" else None,   # isee: samples, not seeds
+                "access": access, "axes": list(campaign.axes)})
     out.pop("duration", None)
     return out
 
