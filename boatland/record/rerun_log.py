@@ -32,7 +32,7 @@ from boatland.record.scene import COLORS, FENDER_RADIUS, FORCE_SCALE, MODE_COLOR
     Scene, fender_forces, scene_from_trial
 
 __all__ = ["RerunView", "RerunLog", "parse_target", "open_stream", "check_target", "blueprint", "serve_until_interrupted",
-           "spawn_viewer", "APPLICATION_ID", "TIMELINE"]
+           "spawn_viewer", "exposure_warning", "APPLICATION_ID", "TIMELINE"]
 
 APPLICATION_ID = "boatland"
 TIMELINE = "sim_time"
@@ -96,10 +96,18 @@ def _wait_listening(bind: str, port: int, timeout: float = 5.0) -> bool:
             time.sleep(0.05)
 
 
+def exposure_warning(bind: str, port: int, what: str) -> str | None:
+    """The warning a listener on ``bind``:``port`` beyond this machine gets (None on a loopback address)."""
+    if _is_loopback(bind):
+        return None
+    return (f"warning: rerun: {what} on {bind}:{port} without authentication: anyone who can reach this machine "
+            "can read the run")
+
+
 def _warn_if_open(bind: str, port: int, what: str) -> None:
-    if not _is_loopback(bind):
-        print(f"warning: rerun: {what} on {bind}:{port} without authentication: anyone who can reach this "
-              "machine can read the run", file=sys.stderr)
+    text = exposure_warning(bind, port, what)
+    if text:
+        print(text, file=sys.stderr)
 
 
 #: Seconds to wait for a spawned viewer to accept connections.

@@ -71,12 +71,30 @@ def test_rerun_serve_listens_on_loopback_only(tmp_path):
 
 
 @pytest.mark.slow
-def test_a_wider_bind_must_be_asked_for_and_warns(tmp_path):
+def test_the_bind_asked_for_is_the_one_used(tmp_path):
+    """``--bind`` is honoured as given — shown with another loopback address, so that the suite itself never
+    listens beyond this machine — and an address that is not this machine's is refused before the run."""
     port = free_port()
-    code, out, err, seen = watch(["run", "--duration", "120", "--no-log", "--rerun", "serve", "--port", port,
-                                  "--bind", "0.0.0.0"])
+    code, out, err, seen = watch(["run", "--duration", "60", "--no-log", "--rerun", "serve", "--port", port,
+                                  "--bind", "127.0.0.2"])
     assert code == 0, err
-    assert ("0.0.0.0", port) in seen and "without authentication" in err
+    assert ("127.0.0.2", port) in seen and all(a == "127.0.0.2" for a, _ in seen), seen
+    assert "without authentication" not in err                    # loopback: this machine only, no warning
+    # 192.0.2.1 is TEST-NET-1 (RFC 5737): no machine's address
+    r = subprocess.run([sys.executable, "-m", "boatland", "run", "--no-log", "--rerun", "serve", "--port", str(port),
+                        "--bind", "192.0.2.1"], capture_output=True, text=True, env=ENV, timeout=120)
+    assert r.returncode == 2 and "192.0.2.1" in r.stderr and "Traceback" not in r.stderr, r.stderr
+    assert len(r.stderr.strip().splitlines()) == 1 and not r.stdout
+
+
+def test_a_bind_beyond_this_machine_warns():
+    """What a user who asks for ``--bind 0.0.0.0`` is told (the listener itself is not opened here)."""
+    from boatland.record.rerun_log import exposure_warning
+
+    text = exposure_warning("0.0.0.0", 9876, "serving")
+    assert text.startswith("warning: rerun: serving on 0.0.0.0:9876 without authentication")
+    assert exposure_warning("::", 9876, "serving") is not None
+    assert all(exposure_warning(a, 9876, "serving") is None for a in ("127.0.0.1", "127.0.0.2", "::1"))
 
 
 @pytest.mark.slow
