@@ -37,36 +37,11 @@ def repo_root() -> Path:
 
 @pytest.fixture(scope="session")
 def small_store(tmp_path_factory):
-    """A finished campaign store of the default landing: Hs 0.15 / 0.6 m × head / bow-quartering seas,
-    3 seeds, 6 s of full waves each (12 trials, run in this process); ``(campaign file, store, JSON
-    the campaign printed)``."""
-    import contextlib
-    import io
-    import json
+    """A finished campaign store of the default landing: Hs 0.15 / 0.6 m × head / bow-quartering seas
+    (``tests/small_campaign.py``); ``(campaign file, store, JSON the campaign printed)``."""
+    from small_campaign import run_small_campaign
 
-    from boatland.cli import main
-
-    tmp = tmp_path_factory.mktemp("small_campaign")
-    camp = tmp / "small.toml"
-    camp.write_text(f"""
-name = "small"
-scenario = "{REPO / 'scenarios' / 'ctv_landing.toml'}"
-seeds = 3
-master_seed = 5
-duration = 6.0
-[set]
-"radiation.method" = "state_space"
-[axes]
-"sea.Hs" = [0.15, 0.6]
-"sea.relative_direction_deg" = [180.0, 135.0]
-[incidents]
-slip_distance = [0.1]
-""")
-    out = io.StringIO()
-    with contextlib.redirect_stdout(out):
-        status = main(["campaign", str(camp), "-o", str(tmp / "small.h5"), "--workers", "1", "--json"])
-    assert status == 0
-    return camp, tmp / "small.h5", json.loads(out.getvalue())
+    return run_small_campaign(tmp_path_factory.mktemp("small_campaign"), "small", [0.15, 0.6], [180.0, 135.0])
 
 
 # --- validation cases must run: a skip under tests/validation/ fails the session ---------------------

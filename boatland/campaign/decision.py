@@ -90,8 +90,6 @@ def p_text(v: float) -> str:
     return probability_text(v) if 0 < v < 0.01 else f"{v:.2f}"
 
 
-_p = p_text
-
 
 @dataclass(frozen=True)
 class Cell:
@@ -119,13 +117,13 @@ class Cell:
         """
         if self.n == 0:
             return "no completed trial"
-        out = f"{_p(self.p)} [{_p(self.lo)}, {_p(self.hi)}]"
+        out = f"{p_text(self.p)} [{p_text(self.lo)}, {p_text(self.hi)}]"
         extra = []
         if screening and math.isfinite(self.screening):
-            extra.append(f"screening {_p(self.screening)}")
+            extra.append(f"screening {p_text(self.screening)}")
         for method, (p, lo, hi) in self.others.items():
             if math.isfinite(p):
-                extra.append(f"{method} {_p(p)}" + (f" [{_p(lo)}, {_p(hi)}]" if math.isfinite(lo) else ""))
+                extra.append(f"{method} {p_text(p)}" + (f" [{p_text(lo)}, {p_text(hi)}]" if math.isfinite(lo) else ""))
         return out + (f" ({'; '.join(extra)})" if extra else "")
 
     def as_dict(self) -> dict:

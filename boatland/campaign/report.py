@@ -72,6 +72,7 @@ __all__ = [
     "figure_p_vs_hs",
     "figure_time_to_incident",
     "isee_incident",
+    "isee_limits_at",
     "isee_linear",
     "read_store",
     "store_decision",
@@ -225,12 +226,43 @@ def _campaign_title(data: dict) -> str:
     return f"{header.get('campaign', '')}: what moves the limit — " + "; ".join(x for x in (fixed, seeds) if x)
 
 
+def isee_limits_at(data: dict, Tp: float, headings, store="the store"):
+    """A rare-event store's limiting Hs per relative heading at peak period ``Tp`` (its ``isee_limits``; a Tp
+    or heading the campaign held fixed is read from its inputs) as the row of its incident definition in a
+    sensitivity table (:class:`boatland.freqdomain.sensitivity.ExtraLimit`); None without a case there."""
+    import math
+
+    from boatland.freqdomain.sensitivity import ExtraLimit
+
+    lim = data.get("isee_limits")
+    if lim is None or lim.size == 0:
+        return None
+    fixed = json.loads(data["header"].get("inputs") or "{}")
+
+    def value(row, key):                         # an axis of the campaign, else what it held fixed
+        col = f"axis: {key}"
+        return float(row[col]) if col in lim.dtype.names else fixed.get(key.split(".")[-1])
+    found = {}
+    for row in lim:
+        tp, b = value(row, "sea.Tp"), value(row, "sea.relative_direction_deg")
+        if tp is not None and b is not None and math.isclose(tp, Tp, rel_tol=1e-6):
+            found.update({float(x): float(row["limiting Hs"]) for x in headings
+                          if abs((b - x + 180) % 360 - 180) < 1e-6})
+    if not found:
+        return None
+    name = data["plan"].get("name", "")
+    return ExtraLimit(label=f"{lim['incident'][0].decode()} (time domain)", limits=found, short=f"ISEE {name}",
+                      source=f"campaign {name!r} ({store}): the time domain's limiting Hs by importance sampling, "
+                             "its isee_limits")
+
+
 def store_sensitivity(data: dict, store="the store"):
     """What moves the limit of the campaign's base, as the campaign computed it (``/sensitivity``,
     :func:`boatland.campaign.prepare.case_sensitivity`) — with, for a rare-event store whose incident is not
     the slip onset, its own limiting Hs per heading as the row of the incident definition (from the
-    screening's onset to the time domain's limit for this incident). None when the store has none."""
-    from boatland.freqdomain.sensitivity import ExtraLimit, Sensitivity
+    screening's onset to the time domain's limit for this incident, :func:`isee_limits_at`). None when the
+    store has none."""
+    from boatland.freqdomain.sensitivity import Sensitivity
 
     text = data.get("sensitivity")
     if not text:
@@ -240,18 +272,10 @@ def store_sensitivity(data: dict, store="the store"):
         return None
     study = Sensitivity.from_dict(d)
     lim = data.get("isee_limits")
-    key = "axis: sea.relative_direction_deg"
-    if lim is None or key not in (lim.dtype.names or ()):
+    if lim is None or lim["incident"][0].decode() == "first slip":
         return study
-    incident = lim["incident"][0].decode()
-    tp_ok = np.ones(len(lim), bool) if "axis: sea.Tp" not in lim.dtype.names else np.isclose(lim["axis: sea.Tp"], study.Tp)
-    found = {float(b): float(h) for b, h, ok in zip(lim[key], lim["limiting Hs"], tp_ok) if ok}
-    if incident == "first slip" or not found:
-        return study
-    name = data["header"].get("campaign", "")
-    return study.with_extra(ExtraLimit(label=f"{incident} (time domain)", limits=found, short=f"ISEE {name}",
-                                       source=f"campaign {name!r} ({Path(str(store)).name}): the time domain's "
-                                              "limiting Hs by importance sampling (isee_limits)"))
+    extra = isee_limits_at(data, study.Tp, study.beta_deg, Path(str(store)).name)
+    return study if extra is None else study.with_extra(extra)
 
 
 def _fmt(v) -> str:

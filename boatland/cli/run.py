@@ -102,13 +102,16 @@ def cmd(args) -> int:
     if args.output:
         result.to_hdf5(args.output)
     risk = _sea_risk(scenario, db, setup, args.accept)
+    defs, outcome = result.incident_definitions, result.verdict().outcome
     if args.json:
         out = result.report(args.events)
-        out["risk"] = _risk_dict(result, risk)
+        out["risk"] = ({"available": False, "reason": risk} if isinstance(risk, str)
+                       else {"available": True, **risk.as_dict(defs, outcome)})
         print(json.dumps(out, indent=2, default=float, ensure_ascii=False))
     else:
         text = result.summary_text(args.events).split("\n")
-        print("\n".join(text[:1] + _risk_lines(result, risk) + text[1:]))
+        odds = [f"  (no odds for this sea: {risk})"] if isinstance(risk, str) else risk.lines(defs, outcome)
+        print("\n".join(text[:1] + odds + text[1:]))
         if args.output:
             print(f"wrote {args.output}")
         if log_path is not None:
@@ -132,57 +135,6 @@ def _sea_risk(scenario, db, setup, accept):
         return sea_risk(scenario, db, setup=setup, accept=accept)
     except BoatlandInputError as exc:
         return str(exc).split(": ", 1)[-1]
-
-
-def _incident_risk(risk, d) -> tuple[float | None, str]:
-    """One trial incident definition's probability per access from the screening and how it is meant:
-    ``(p, "estimate" | "upper bound" | "time domain only")``."""
-    if d.screening == "onset":
-        return risk.p_onset, "estimate"
-    if d.screening == "bounded":
-        return risk.p_onset, "upper bound"
-    if d.screening == "roll":
-        return risk.p_roll_above(d.limit_deg), "estimate"
-    return None, "time domain only"
-
-
-def _risk_lines(result, risk) -> list[str]:
-    """Under the verdict: this sea's odds against the accepted risk, then each incident's (text output)."""
-    from boatland.freqdomain.statistics import one_in, probability_text
-
-    if isinstance(risk, str):
-        return [f"  (no odds for this sea: {risk})"]
-    outcome = result.verdict().outcome.upper()
-    lines = [f"  {outcome} this time; " + risk.odds_text(risk.p_onset, "a slip onset"),
-             f"  per {risk.access / 60:g}-min access in this sea (frequency-domain screening, "
-             f"{risk.response.statistics.capitalize()}):"]
-    rows = [("first slip (onset)", risk.p_onset, "estimate")]
-    rows += [(d.name, *_incident_risk(risk, d)) for d in result.incident_definitions]
-    for name, p, how in rows:
-        if p is None:
-            lines.append(f"    {name:29s} time domain only (boatland campaign)")
-            continue
-        value = f"{'≤ ' if how == 'upper bound' else ''}{probability_text(p)} ({one_in(p)})"
-        note = ("  the onset bounds it; a campaign tells how much lower" if how == "upper bound" else
-                f"  {'above' if p > risk.accept else 'within'} the accepted {one_in(risk.accept)}")
-        lines.append(f"    {name:29s} {value:22s}{note}")
-    return lines
-
-
-def _risk_dict(result, risk) -> dict:
-    """``run --json``'s ``risk``: the accepted risk, and this sea's probability per access of each incident."""
-    if isinstance(risk, str):
-        return {"available": False, "reason": risk}
-    out = {"available": True, **risk.as_dict(), "access_s": risk.access,
-           "headline": f"{result.verdict().outcome.upper()} this time; " + risk.odds_text(risk.p_onset, "a slip onset")}
-    incidents = {"first slip": {"p": risk.p_onset, "basis": "estimate", "above_accepted": risk.p_onset > risk.accept}}
-    for d in result.incident_definitions:
-        p, how = _incident_risk(risk, d)
-        incidents[d.name] = {"p": p, "basis": how,
-                             "above_accepted": None if p is None or (how == "upper bound" and p > risk.accept)
-                             else p > risk.accept}   # a bound above the accepted risk decides nothing
-    out["incidents"] = incidents
-    return out
 
 
 def _log_path(args, scenario) -> Path | None:

@@ -271,14 +271,14 @@ def _sensitivity(args) -> int:
 
 
 def _store_limits(path, Tp, beta, accept, setup, args):
-    """The time domain's limiting Hs per heading at ``Tp`` from an ISEE campaign store's ``isee_limits``
-    (:func:`boatland.campaign.report.read_store`) as an :class:`~boatland.freqdomain.sensitivity.ExtraLimit`."""
+    """The time domain's limiting Hs per heading at ``Tp`` from an ISEE campaign store
+    (:func:`boatland.campaign.report.isee_limits_at`) as an :class:`~boatland.freqdomain.sensitivity.ExtraLimit`,
+    refused when its accepted risk is not the screening's, with a warning when its push or μ_s are not."""
     import math
     import sys
 
-    from boatland.campaign.report import read_store
+    from boatland.campaign.report import isee_limits_at, read_store
     from boatland.freqdomain import accept_probability
-    from boatland.freqdomain.sensitivity import ExtraLimit
 
     try:
         data = read_store(path)
@@ -292,23 +292,13 @@ def _store_limits(path, Tp, beta, accept, setup, args):
     if not math.isclose(float(lim["accept"][0]), p, rel_tol=1e-6):
         raise BoatlandInputError(f"--limits {path}: its limits are at P = {lim['accept'][0]:g} per access, the "
                                  f"screening's at {p:g}; give --accept {lim['accept'][0]:g}")
-    fixed = json.loads(data["header"].get("inputs") or "{}")
-
-    def value(row, key):                         # an axis of the campaign, else what it held fixed
-        col = f"axis: {key}"
-        return float(row[col]) if col in lim.dtype.names else fixed.get(key.split(".")[-1])
-    found = {}
-    for row in lim:
-        tp, b = value(row, "sea.Tp"), value(row, "sea.relative_direction_deg")
-        if tp is not None and b is not None and math.isclose(tp, Tp, rel_tol=1e-6):
-            found.update({float(x): float(row["limiting Hs"]) for x in beta if abs((b - x + 180) % 360 - 180) < 1e-6})
-    if not found:
+    extra = isee_limits_at(data, Tp, beta, path)
+    if extra is None:
         raise BoatlandInputError(f"--limits {path}: no case at Tp {Tp:g} s and relative heading "
                                  f"{', '.join(f'{x:g}°' for x in beta)} in its isee_limits")
+    fixed = json.loads(data["header"].get("inputs") or "{}")
     push, mu = args.thrust or setup.thrust, args.mu or setup.mu
     if fixed.get("thrust") not in (None, push) or fixed.get("mu_s") not in (None, mu):
         print(f"warning: --limits {path}: its campaign ran push {fixed.get('thrust', 0) / 1e3:g} kN, μ_s "
               f"{fixed.get('mu_s')}, the screening's base {push / 1e3:g} kN, μ_s {mu:g}", file=sys.stderr)
-    name = data["plan"].get("name", "")
-    return ExtraLimit(label=f"{lim['incident'][0].decode()} (time domain)", limits=found, short=f"ISEE {name}",
-                      source=f"campaign {name!r} ({path}): the time domain's limiting Hs by ISEE, its isee_limits")
+    return extra

@@ -70,9 +70,68 @@ class SeaRisk:
         return (f"{what} is expected in {one_in(p).replace('1 in ', '1 of ')} such {access_text(self.access)}es "
                 f"({probability_text(p)}) — {side} the accepted {self.accepted_text()}")
 
-    def as_dict(self) -> dict:
-        return {"accepted": {"p": self.accept, "access_s": self.access, "text": self.accepted_text()},
-                "statistics": self.response.statistics, "p_onset": self.p_onset}
+    def of(self, incident) -> tuple[float | None, str]:
+        """One incident definition's probability per access and what it is — ``"estimate"`` (the slip onset,
+        roll beyond a limit), ``"upper bound"`` (a slip or slide incident: it starts with an onset) or
+        ``"time domain only"`` (p None) — by the definition's ``screening`` attribute
+        (:class:`boatland.trial.incidents.Incident`)."""
+        kind = getattr(incident, "screening", None)
+        if kind == "onset":
+            return self.p_onset, "estimate"
+        if kind == "bounded":
+            return self.p_onset, "upper bound"
+        if kind == "roll":
+            return self.p_roll_above(incident.limit_deg), "estimate"
+        return None, "time domain only"
+
+    def rows(self, incidents) -> list[tuple[str, float | None, str, bool | None]]:
+        """``(name, p, basis, above the accepted risk)`` of the first slip and each definition; "above" is
+        None where the figure decides nothing (time domain only, or a bound above the accepted risk)."""
+        out = []
+        for d in (_FIRST_SLIP, *incidents):
+            p, basis = self.of(d)
+            above = None if p is None or (basis == "upper bound" and p > self.accept) else p > self.accept
+            out.append((d.name, p, basis, above))
+        return out
+
+    def headline(self, outcome: str) -> str:
+        """"HELD this time; a slip onset is expected in …" — a trial's ``outcome`` beside this sea's odds."""
+        return f"{outcome.upper()} this time; " + self.odds_text(self.p_onset, "a slip onset")
+
+    def lines(self, incidents, outcome: str) -> list[str]:
+        """The headline, then each incident's probability per access (text, indented for a summary)."""
+        lines = [f"  {self.headline(outcome)}",
+                 f"  per {access_text(self.access)} in this sea (frequency-domain screening, "
+                 f"{self.response.statistics.capitalize()}):"]
+        for name, p, basis, _ in self.rows(incidents):
+            if p is None:
+                lines.append(f"    {name:29s} time domain only (boatland campaign)")
+                continue
+            value = f"{'≤ ' if basis == 'upper bound' else ''}{probability_text(p)} ({one_in(p)})"
+            note = ("  the onset bounds it; a campaign tells how much lower" if basis == "upper bound" else
+                    f"  {'above' if p > self.accept else 'within'} the accepted {one_in(self.accept)}")
+            lines.append(f"    {name:29s} {value:22s}{note}")
+        return lines
+
+    def as_dict(self, incidents=(), outcome: str | None = None) -> dict:
+        """JSON-able: the accepted risk, the statistics, the onset's probability and each incident's."""
+        out = {"accepted": {"p": self.accept, "access_s": self.access, "text": self.accepted_text()},
+               "statistics": self.response.statistics, "access_s": self.access, "p_onset": self.p_onset,
+               "incidents": {name: {"p": p, "basis": basis, "above_accepted": above}
+                             for name, p, basis, above in self.rows(incidents)}}
+        if outcome is not None:
+            out["headline"] = self.headline(outcome)
+        return out
+
+
+class _Onset:
+    """The slip onset as an incident the screening estimates (its name as a campaign counts it)."""
+
+    name = "first slip"
+    screening = "onset"
+
+
+_FIRST_SLIP = _Onset()
 
 
 def sea_risk(scenario, db, *, setup=None, accept="best", access: float = ACCESS_DURATION,

@@ -79,13 +79,19 @@ class Incident:
         the order of the fields (``(distance, window)``)."""
         return cls(*value) if isinstance(value, (tuple, list)) else cls(value)
 
+    def from_row(self, r, k0: int) -> float | None:
+        """First time [s] of the incident in trial ``r`` counted from row ``k0`` on (None: not from there):
+        a definition that has it gets :meth:`first_time` (from the settling) and :meth:`in_access` (from the
+        access's first row) from it."""
+        raise NotImplementedError  # pragma: no cover
+
     def first_time(self, r) -> float | None:
         """First time [s] of the incident in trial ``r`` after its settling (None: it did not happen)."""
-        raise NotImplementedError  # pragma: no cover
+        return self.from_row(r, r.settle_row)
 
     def in_access(self, r, t_access: float) -> float | None:
         """First time [s] of the incident at or after ``t_access`` (None: not in the access)."""
-        raise NotImplementedError  # pragma: no cover
+        return self.from_row(r, int(np.searchsorted(r.t, t_access - 1e-9)))
 
     def __str__(self) -> str:
         return self.name
@@ -120,7 +126,7 @@ class SlipDistance(Incident):
     template: ClassVar[str] = "slip > {:g} m"
     screening: ClassVar[str | None] = "bounded"
 
-    def _first_from(self, r, k0: int) -> float | None:
+    def from_row(self, r, k0: int) -> float | None:
         worst = r.worst_offset
         rows, _ = r.slip_rows
         slipped = rows[rows >= r.settle_row]
@@ -128,12 +134,6 @@ class SlipDistance(Incident):
             return None
         k0 = max(k0, int(slipped[0]))
         return first_exceedance(r.t[k0:], worst[k0:], self.distance) if k0 < r.t.size else None
-
-    def first_time(self, r) -> float | None:
-        return self._first_from(r, r.settle_row)
-
-    def in_access(self, r, t_access: float) -> float | None:
-        return self._first_from(r, int(np.searchsorted(r.t, t_access - 1e-9)))
 
 
 @dataclass(frozen=True)
@@ -154,17 +154,11 @@ class SlideWithin(Incident):
     template: ClassVar[str] = "slide > {:g} m within {:g} s"
     screening: ClassVar[str | None] = "bounded"
 
-    def _first_from(self, r, k_start: int) -> float | None:
-        if r.slide is None or not r.mode.shape[1] or k_start >= r.t.size:
+    def from_row(self, r, k0: int) -> float | None:
+        """Slides in the steps after row ``k0`` (in an access, the window does not reach back before it)."""
+        if r.slide is None or not r.mode.shape[1] or k0 >= r.t.size:
             return None
-        return first_exceedance(r.t, windowed_slide(r.t, r.slide, k_start, self.window), self.distance)
-
-    def first_time(self, r) -> float | None:
-        return self._first_from(r, r.settle_row)
-
-    def in_access(self, r, t_access: float) -> float | None:
-        """Slides from ``t_access`` on (the window does not reach back before the access)."""
-        return self._first_from(r, int(np.searchsorted(r.t, t_access - 1e-9)))
+        return first_exceedance(r.t, windowed_slide(r.t, r.slide, k0, self.window), self.distance)
 
 
 @dataclass(frozen=True)
@@ -176,13 +170,13 @@ class RollAbove(Incident):
     template: ClassVar[str] = "roll > {:g}°"
     screening: ClassVar[str | None] = "roll"
 
-    def first_time(self, r) -> float | None:
-        return first_exceedance(r.t, r.x[:, 3], np.radians(self.limit_deg))
-
-    def in_access(self, r, t_access: float) -> float | None:
+    def from_row(self, r, k0: int) -> float | None:
         t = r.t
-        k0 = int(np.searchsorted(t, t_access - 1e-9))
         return first_exceedance(t[k0:], r.x[k0:, 3], math.radians(self.limit_deg)) if k0 < t.size else None
+
+    def first_time(self, r) -> float | None:
+        """Roll counts from the start of the trial (the settling included)."""
+        return self.from_row(r, 0)
 
 
 @dataclass(frozen=True)

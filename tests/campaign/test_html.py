@@ -5,8 +5,6 @@ phone (viewport, tables in scrolling boxes), and every number of its tables the 
 tables of the report format them."""
 
 import base64
-import contextlib
-import io
 import math
 import re
 import warnings
@@ -124,28 +122,11 @@ def check_self_contained(page: Page, files: list[Path]) -> None:
 @pytest.fixture(scope="module")
 def active_store(tmp_path_factory):
     """A finished Monte Carlo store of the default landing where something happens: Hs 0.8 / 1.6 m × head /
-    beam seas, 3 seeds, 6 s of full waves each (12 trials, in this process)."""
-    from boatland.cli import main
+    beam seas, 3 seeds, 6 s of full waves each (12 trials, in this process), a name to be escaped."""
+    from small_campaign import run_small_campaign
 
-    tmp = tmp_path_factory.mktemp("html_campaign")
-    camp = tmp / "active.toml"
-    camp.write_text(f"""
-name = "active <&> page"
-scenario = "{REPO / 'scenarios' / 'ctv_landing.toml'}"
-seeds = 3
-master_seed = 5
-duration = 6.0
-[set]
-"radiation.method" = "state_space"
-[axes]
-"sea.Hs" = [0.8, 1.6]
-"sea.relative_direction_deg" = [180.0, 90.0]
-[incidents]
-slip_distance = [0.1]
-""")
-    with contextlib.redirect_stdout(io.StringIO()):
-        assert main(["campaign", str(camp), "-o", str(tmp / "active.h5"), "--workers", "1", "--json"]) == 0
-    return tmp / "active.h5"
+    return run_small_campaign(tmp_path_factory.mktemp("html_campaign"), "active <&> page", [0.8, 1.6],
+                              [180.0, 90.0])[1]
 
 
 CELL = re.compile(r"^([\d.e-]+) \[([\d.e-]+), ([\d.e-]+)\](?: \(screening ([\d.e-]+)\))?$")
