@@ -655,7 +655,7 @@ def _fd_case(campaign, c, loaders, dbs):
                     m, _ = spectral_moments(tr, [p.Tp], sea=p, water_depth=h, g=db.g)
                     keep = distinct_events(m[..., 0], tr.capacity,
                                            response_correlation(tr, [p.Tp], sea=p, water_depth=h, g=db.g))
-                    dbs[key] = (m, tr.capacity, p.Tp, beta, _access(campaign, sc), keep)
+                    dbs[key] = (m, tr.capacity, p.Tp, beta, _access(campaign, sc), keep, tr.background)
         except Exception:  # noqa: BLE001 — the screening is a comparison; NaN where it cannot answer
             dbs[key] = None
     return dbs[key]
@@ -671,9 +671,9 @@ def _screening_p(campaign, c, hs, statistics, loaders, dbs) -> float:
     fd = _fd_case(campaign, c, loaders, dbs)
     if fd is None or hs is None:
         return math.nan
-    m, cap, tp, _, access, keep = fd
+    m, cap, tp, _, access, keep, bg = fd
     return float(incident_probability(hs, m, cap, [tp], statistics=statistics, access_duration=access,
-                                      keep=keep)[1][0, 0])
+                                      keep=keep, background=bg)[1][0, 0])
 
 
 def _screening_limit(campaign, c, statistics, loaders, dbs) -> float:
@@ -681,9 +681,9 @@ def _screening_limit(campaign, c, statistics, loaders, dbs) -> float:
     fd = _fd_case(campaign, c, loaders, dbs)
     if fd is None:
         return math.nan
-    m, cap, tp, beta, access, keep = fd
+    m, cap, tp, beta, access, keep, bg = fd
     return float(fd_limiting_hs(m, cap, [tp], [beta], accept=campaign.isee.accept, statistics=statistics,
-                                access_duration=access, keep=keep).Hs[0, 0])
+                                access_duration=access, keep=keep, background=bg).Hs[0, 0])
 
 
 # ------------------------------------------------------------------------------------ looking at samples

@@ -85,6 +85,8 @@ def cmd(args) -> int:
     if not args.json:
         print(f"running {scenario.name}: {scenario.simulation.duration:g} s at dt = {setup.dt:g} s "
               f"({setup.n_steps} steps), {db.name}, radiation {scenario.radiation.method}", file=sys.stderr)
+        for line in setup.environment.lines(scenario):
+            print(f"  {line}", file=sys.stderr)
     try:
         result = _simulate_with_bar(simulate, setup, show=not args.json, sinks=sinks,
                                     progress_file=args.progress_file)

@@ -14,7 +14,7 @@ from boatland.cli.common import (
     scenario_argument,
     screening_options,
 )
-from boatland.cli.guard import Output, integer, positive
+from boatland.cli.guard import Output, in_range, integer, positive
 from boatland.errors import BoatlandInputError
 from boatland.reproducible import pinned
 
@@ -42,6 +42,13 @@ def add_parser(sub) -> None:
     screen.add_argument("--shear-sweep", type=positive("s", 1e4), metavar="TP",
                         help="instead of the table over Tp: the limiting Hs at peak period TP against the fender's "
                              "shear stiffness (0.1× … 100× the scenario's, and rigid), per direction; -o draws it")
+    screen.add_argument("--current-sweep", type=positive("s", 1e4), nargs="?", const=0.0, metavar="TP",
+                        help="instead of the table over Tp: the limiting Hs at peak period TP (default the scenario's "
+                             "Tp, else 7) against the tidal current's speed (--speeds) and its direction relative to "
+                             "the vessel (every 45°), the waves at the scenario's relative direction; prints which "
+                             "side to land with the current on; -o draws it")
+    screen.add_argument("--speeds", type=in_range(0.0, 5.0, lo_open=False, unit=" m/s"), nargs="+", metavar="U",
+                        help="with --current-sweep: current speeds [m/s] (default 0 0.25 0.5 0.75 1 1.5)")
     screen.add_argument("--sensitivity", action="store_true",
                         help="instead of the table over Tp: what moves the limit — the limiting Hs at one Tp with one "
                              "input at a time at the ends of a sourced range (accepted risk, push, μ_s, the fender's "
@@ -67,6 +74,12 @@ def cmd(args) -> int:
     from boatland.freqdomain.statistics import one_in, risk_in_words
 
     freq_check(args)
+    if args.speeds is not None and args.current_sweep is None:
+        raise BoatlandInputError("--speeds: only with --current-sweep")
+    if args.current_sweep is not None:
+        if args.sensitivity or args.shear_sweep is not None:
+            raise BoatlandInputError("--current-sweep: not with --sensitivity or --shear-sweep (one sweep at a time)")
+        return _current_sweep(args)
     if args.sensitivity:
         return _sensitivity(args)
     for flag, value in (("--factors", args.factors), ("--limits", args.limits)):
@@ -191,6 +204,52 @@ def _shear_sweep(args, scenario, db, setup, beta, sea, depth) -> int:
                                                 f"shear stiffness\n{_sea_shape(scenario)}; push {thrust / 1e3:g} kN, "
                                                 f"μ {mu:g}; P = {sw.table.accept:g} per {args.access:g} s access "
                                                 f"({sw.table.statistics})")
+        if not args.json:
+            print(f"wrote {args.output}")
+    return 0
+
+
+def _current_sweep(args) -> int:
+    """``screen --current-sweep [TP]``: the limiting Hs against the current's speed and relative direction."""
+    import sys
+
+    from boatland.freqdomain.currents import DEFAULT_SPEEDS, current_sweep, plot_current_sweep
+    from boatland.freqdomain.statistics import risk_in_words
+
+    scenario, db = freq_load(args.scenario, [Output("-o", args.output, "figure")])
+    if args.tp is not None or args.directions is not None:
+        raise BoatlandInputError("--current-sweep takes its period as its own value (--current-sweep TP) and sweeps "
+                                 "the current's directions: not with --tp or --directions")
+    sea, _ = freq_sea(scenario)
+    Tp = args.current_sweep or (sea.Tp if sea is not None and sea.Tp else 7.0)
+    depth = scenario.sea.water_depth if scenario.sea is not None else None
+    speeds = tuple(args.speeds) if args.speeds else DEFAULT_SPEEDS
+    show = not args.json and sys.stderr.isatty()
+
+    def progress(done, total):
+        if show:
+            print(f"\rscreening {done}/{total} currents", end="" if done < total else "\n", file=sys.stderr, flush=True)
+
+    sw = current_sweep(db, scenario, Tp, speeds=speeds, accept=args.accept, statistics=args.statistics, sea=sea,
+                       water_depth=depth, access_duration=args.access, roll_limit_deg=args.roll_limit,
+                       progress=progress)
+    if args.json:
+        from boatland.cli.common import print_json
+
+        print_json({"scenario": scenario.name, "database": db.name, **sw.as_dict()})
+    else:
+        print(f"{scenario.name}: limiting Hs [m] at Tp = {sw.Tp:g} s, waves at {sw.wave_deg:g}° relative, at the "
+              f"accepted {risk_in_words(sw.accept, args.access)} ({sw.statistics}) against the current; rows speed, "
+              "columns the direction it flows towards relative to the vessel (180 = onto the bow, 90 = from "
+              "starboard)")
+        print(sw.text())
+        print("which side to land with the current on (the waves held at the same relative direction):")
+        for line in sw.advice():
+            print("  " + line)
+    if args.output:
+        plot_current_sweep(sw, args.output, title=f"{scenario.name}: {db.name}, limiting Hs at Tp {sw.Tp:g} s, waves "
+                                                  f"at {sw.wave_deg:g}° against the current\n{_sea_shape(scenario)}; "
+                                                  f"P = {sw.accept:g} per {args.access:g} s access ({sw.statistics})")
         if not args.json:
             print(f"wrote {args.output}")
     return 0

@@ -13,12 +13,21 @@ from dataclasses import dataclass
 import numpy as np
 
 from boatland.errors import BoatlandInputError
+from boatland.freqdomain.rao import hinged_rao
+from boatland.landing.law import SteadyLoad, normal_follows
 from boatland.landing.setup import Setup
+from boatland.sea.drift import mean_drift
 from boatland.sea.pile import Pile, pile_scattered_excitation
 from boatland.vessel.database import HydroDB
 from boatland.waves.excitation import direction_brackets, periodic_directions
 
-__all__ = ["LandingSetup"]
+__all__ = ["GUST_F_MAX", "GUST_OMEGA_MIN", "GUST_POINTS", "LandingSetup"]
+
+#: The gusts' grid (:meth:`LandingSetup.gust_response`): lowest frequency [rad/s], number of points, highest
+#: gust frequency [Hz] (as the time domain's synthesis, :data:`boatland.loads.wind.F_MAX`).
+GUST_OMEGA_MIN = 1e-3
+GUST_POINTS = 1500
+GUST_F_MAX = 2.0
 
 #: The databases with the pile's scattered wave added, per database and layout (computing X_s over a
 #: database's whole (ω, β) grid takes about a second; the screening of one landing asks for it often).
@@ -65,6 +74,14 @@ class LandingSetup:
         Length of the fender line at each contact [m] (0: a point fender).
     tube_radius : ndarray, shape (Np,)
         Radii of the tubes [m] (how a point fender's normal turns: :func:`boatland.landing.law.normal_follows`).
+    thrust_direction : ndarray, shape (3,)
+        Unit body direction of the push (default along x).
+    steady : SteadyLoad or None
+        Steady loads besides the push — current, mean wind, mean wave drift — with their linearisation
+        (:meth:`boatland.landing.environment.Environment.steady_load`); None: none.
+    environment : Environment or None
+        The scenario's loads beside the waves (:class:`boatland.landing.environment.Environment`), for the
+        statistical linearisation of the hull's drag (:meth:`with_drag_linearised`); None: none.
     """
 
     points: np.ndarray
@@ -84,6 +101,9 @@ class LandingSetup:
     position: tuple = (0.0, 0.0)
     fender_width: float = 0.0
     tube_radius: np.ndarray | float = np.inf
+    thrust_direction: np.ndarray = dataclasses.field(default_factory=lambda: np.array([1.0, 0.0, 0.0]))
+    steady: SteadyLoad | None = None
+    environment: object = None
 
     def __post_init__(self):
         P = np.atleast_2d(np.asarray(self.points, dtype=float))
@@ -107,6 +127,7 @@ class LandingSetup:
             c_t = c_t[:1]                       # one value for all (e.g. after replace(points=...))
         object.__setattr__(self, "shear_damping", np.array(np.broadcast_to(c_t, (P.shape[0],))))
         object.__setattr__(self, "thrust_position", np.asarray(self.thrust_position, dtype=float).reshape(3))
+        object.__setattr__(self, "thrust_direction", np.asarray(self.thrust_direction, dtype=float).reshape(3))
         object.__setattr__(self, "additional_damping", np.asarray(self.additional_damping, dtype=float))
 
     @property
@@ -118,6 +139,98 @@ class LandingSetup:
         """Unit vector along the sum of the normals, :math:`\\bar n`."""
         n = self.normals.sum(axis=0)
         return n / np.linalg.norm(n)
+
+    def response(self, db: HydroDB, omega, beta_deg, method: str = "improved", loads=None):
+        """The landed vessel's response (:func:`boatland.freqdomain.rao.hinged_rao`) as the screening takes it:
+        ``"improved"`` — the time domain's contacts (normal and shear laws, the rigid stick when k_t = ∞),
+        follower thrust, steady loads, the pile's scattered wave when the setup has one; ``"wu"`` — a rigid
+        hinge in the open sea. ``loads`` (K, 6): force patterns solved beside the waves."""
+        if method == "wu":
+            return hinged_rao(db, omega, self.points, beta_deg=beta_deg, normal=self.normals,
+                              additional_damping=self.additional_damping)
+        follows = normal_follows(self.fender_width, np.broadcast_to(self.tube_radius, (self.n_points,)),
+                                 self.thrust / self.n_points / self.stiffness)
+        return hinged_rao(self.near_pile(db, beta_deg), omega, self.points, beta_deg=beta_deg, normal=self.normals,
+                          stiffness=self.stiffness, damping=self.damping, shear_stiffness=self.shear_stiffness,
+                          shear_damping=self.shear_damping, sideways=self.sideways,
+                          thrust=self.thrust, thrust_position=self.thrust_position,
+                          thrust_direction=self.thrust_direction, steady=self.steady, loads=loads,
+                          additional_damping=self.additional_damping,
+                          normal_follows=follows["follows"], tube_radius=follows.get("radius", np.inf))
+
+    def gust_response(self, db: HydroDB):
+        """The landed response to the steady loads' gust pattern on the gusts' own grid: (ω, trapezoid
+        weights, x (Nw, 6), J (Nw, Np, 3)) per unit gust force (:class:`boatland.landing.law.SteadyLoad`).
+
+        The grid is log-spaced from :data:`GUST_OMEGA_MIN` (periods of ~100 min; the NPD spectrum's variance below
+        is < 1 % at 10 m/s) with :data:`GUST_POINTS` points up to the gusts' highest frequency (or the database's
+        band): 0.46 % apart, fine enough for the landed vessel's slow sway–yaw mode (ctv27: ~0.08 rad/s, lightly
+        damped), whose resonance carries most of the gusts' effect on the fender."""
+        w = np.geomspace(GUST_OMEGA_MIN, min(float(db.omega[-1]), 2 * math.pi * GUST_F_MAX), GUST_POINTS)
+        r = self.response(db, w, np.array([0.0]), loads=self.steady.gust_pattern[None])
+        wt = np.zeros_like(w)
+        dw = np.diff(w)
+        wt[:-1] += dw / 2
+        wt[1:] += dw / 2
+        return w, wt, r.x_loads[:, 0], r.J_loads[:, 0]
+
+    @property
+    def drag_linearisable(self) -> bool:
+        """The hull's drag damping depends on the motions' size (:meth:`with_drag_linearised` applies)."""
+        env = self.environment
+        return env is not None and env.linearisable and self.steady is not None
+
+    def strip_sigma(self, omega, weights, x) -> np.ndarray:
+        """Standard deviations (n, 2) of the drag strips' longitudinal and transverse velocities for motions
+        ``x`` (Nw, ..., 6) per unit of a process with spectral ``weights`` (Nw, ...) = S(ω) dω."""
+        G = self.environment.strip_maps()
+        x = np.asarray(x).reshape(x.shape[0], -1, 6)                           # (Nw, K, 6)
+        v = 1j * np.asarray(omega)[:, None, None] * x
+        wts = np.asarray(weights, dtype=float).reshape(x.shape[0], -1)          # (Nw, K)
+        return np.sqrt(np.einsum("wk,wkij->ij", wts, np.abs(np.einsum("ijd,wkd->wkij", G, v)) ** 2))
+
+    def with_drag_linearised(self, db: HydroDB, wave_sigma=None, iterations: int = 20,
+                             rtol: float = 1e-3) -> "LandingSetup":
+        r"""The setup with the hull's drag damping linearised statistically: the damping :math:`B^s` of the
+        cross-flow drag (:meth:`boatland.landing.environment.Environment.drag_damping`: Gaussian equivalent
+        linearisation, :math:`B = 2k\,E|w|`) at the strips' velocity standard deviations σ — the gusts' part
+        (iterated with the response, as σ depends on B, to a relative change below ``rtol``) and the waves'
+        ``wave_sigma`` (n, 2), added in quadrature (independent processes). Without a cross-flow drag, the
+        setup as it is; without gusts, only the waves' σ."""
+        if not self.drag_linearisable:
+            return self
+        env, st = self.environment, self.steady
+        B_det = env.current_damping()
+        B_0 = env.drag_damping(np.zeros(env.strip_maps().shape[:2]))
+        sw = None if wave_sigma is None else np.asarray(wave_sigma, dtype=float)
+
+        def damped(sig_g):
+            sig = sig_g if sw is None else np.sqrt(sig_g ** 2 + sw ** 2)
+            return self.replace(steady=dataclasses.replace(st, damping=B_det + env.drag_damping(sig) - B_0))
+
+        sig_g = np.zeros(env.strip_maps().shape[:2])
+        setup = damped(sig_g)
+        if st.gust_pattern is None:
+            return setup
+        for _ in range(iterations):
+            w, wt, x, _ = setup.gust_response(db)
+            new = setup.strip_sigma(w, st.gust_spectrum(w) * wt, x)
+            done = np.all(np.abs(new - sig_g) <= rtol * max(float(new.max()), 1e-12))
+            sig_g = new
+            setup = damped(sig_g)
+            if done:
+                break
+        # λ, the linear share of the swing's damping: for one lightly damped mode σ² ∝ 1/c, so the ratio of its
+        # variance with the linearised drag to that with the drag's linear part only (its derivative at the
+        # mean current; the waves' share counted as linear, they set it whatever the swing does)
+        lin = self.replace(steady=dataclasses.replace(st, damping=B_det + (0.0 if sw is None else
+                                                                             env.drag_damping(sw) - B_0)))
+        w, wt, x, _ = lin.gust_response(db)
+        s_lin = float(np.sum(lin.strip_sigma(w, st.gust_spectrum(w) * wt, x) ** 2))
+        w, wt, x, _ = setup.gust_response(db)
+        s_all = float(np.sum(setup.strip_sigma(w, st.gust_spectrum(w) * wt, x) ** 2))
+        share = min(1.0, s_all / s_lin) if s_lin > 0 else 1.0
+        return setup.replace(steady=dataclasses.replace(setup.steady, linear_share=share))
 
     def replace(self, **changes) -> "LandingSetup":
         """A copy with some attributes changed (e.g. ``mu=0.8, thrust=120e3``)."""
@@ -209,6 +322,17 @@ class LandingSetup:
                       shear_stiffness=f.shear_stiffness, shear_damping=fol.shear_damping, sideways=f.sideways,
                       additional_damping=setup.additional_damping()[0], heading_deg=scenario.vessel.heading_deg,
                       roll_limit_deg=lim, pile=setup.pile, position=setup.start_pose[:2], fender_width=f.width,
-                      tube_radius=np.array([st.diameter / 2 for st in scenario.landing.struts]))
+                      tube_radius=np.array([st.diameter / 2 for st in scenario.landing.struts]),
+                      thrust_direction=setup.environment.push_direction,
+                      steady=setup.environment.steady_load(drift_force=_mean_drift(setup)),
+                      environment=setup.environment)
         landing.check_on_hull(db, src)
-        return landing
+        return landing.with_drag_linearised(db)
+
+
+def _mean_drift(setup: Setup):
+    """The sea's mean wave drift on the vessel when the scenario applies it (None otherwise)."""
+    if setup.environment.drift == "none" or setup.waves is None:
+        return None
+    comps = setup.waves.realise(setup.scenario.simulation.seed, setup.n_steps * setup.dt)
+    return mean_drift(setup.db, comps, setup.environment.heading_deg)

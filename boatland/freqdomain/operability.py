@@ -217,7 +217,7 @@ def availability(db: HydroDB, setup: LandingSetup, scatter: ScatterTable, *, acc
     keep = distinct_events(m[..., 0], tr.capacity, response_correlation(tr, ut, sea=sea, water_depth=h, g=db.g))
     table = limiting_hs(m, tr.capacity, ut, ub, accept=p_acc, statistics=statistics,
                         access_duration=access_duration, method=method, captured=captured, names=tr.names,
-                        keep=keep)
+                        keep=keep, background=tr.background)
     lim = table.Hs[it, ib]
     ok = scatter.Hs <= lim
     return Availability(availability=float(scatter.occurrence[ok].sum()), workable=ok, Hs_limit=lim, beta_deg=beta,

@@ -234,6 +234,8 @@ class HingedResponse:
         Static displacement under the thrust [m, rad] (zero without thrust).
     J_static : ndarray, shape (Np, 3)
         Static reaction on the vessel at each point, local axes [N] (zero without thrust).
+    x_loads, J_loads : ndarray of complex, shape (Nw, K, 6) and (Nw, K, Np, 3), or None
+        The same per unit amplitude of each of the ``loads`` patterns (a gust's force), when asked.
     """
 
     omega: np.ndarray
@@ -245,6 +247,8 @@ class HingedResponse:
     J: np.ndarray
     x_static: np.ndarray
     J_static: np.ndarray
+    x_loads: np.ndarray | None = None
+    J_loads: np.ndarray | None = None
 
     def point_motion(self) -> np.ndarray:
         """Translation of each hinge point, shape (Nw, Nβ, Np, 3) [m/m] (zero where pinned)."""
@@ -282,7 +286,7 @@ def _per_point(value, n_points: int, name: str) -> np.ndarray:
 def hinged_rao(db: HydroDB, omega, points, *, beta_deg=None, normal=None, stiffness=None, damping=None,
                shear_stiffness=None, shear_damping=None, sideways: bool = True, thrust: float = 0.0,
                thrust_position=(0.0, 0.0, 0.0), additional_damping=None, normal_follows: str = "fixed",
-               tube_radius=np.inf) -> HingedResponse:
+               tube_radius=np.inf, thrust_direction=(1.0, 0.0, 0.0), steady=None, loads=None) -> HingedResponse:
     r"""Motions and contact forces of the vessel on its landing (Grøtting 2015 §3.2.1 after Wu 2014).
 
     Solves (:mod:`boatland.landing.law`; Grøtting 2015 eq. 3.1–3.12)
@@ -338,6 +342,14 @@ def hinged_rao(db: HydroDB, omega, points, *, beta_deg=None, normal=None, stiffn
         Bollard push T [N] along the vessel's x axis (0: no preload).
     thrust_position : array_like, shape (3,)
         Body point of the thrust [m].
+    thrust_direction : array_like, shape (3,)
+        Unit body direction of the thrust (default along x).
+    steady : SteadyLoad, optional
+        Steady loads besides the thrust (current, mean wind, mean drift:
+        :class:`boatland.landing.law.SteadyLoad`): their force enters the preload, their linearisation the
+        dynamics (:math:`Z \to Z + K^s + i\omega B^s`).
+    loads : array_like, shape (K, 6), optional
+        Generalised force patterns solved beside the waves (e.g. a gust's; ``x_loads``, ``J_loads``).
     additional_damping : array_like, shape (6, 6) or (6,), optional
         Extra linear damping of the vessel.
     normal_follows : {"fixed", "fender", "tube"}
@@ -392,15 +404,21 @@ def hinged_rao(db: HydroDB, omega, points, *, beta_deg=None, normal=None, stiffn
     X = excitation_force(db, w, beta_deg)           # (Nw, Nβ, 6)
     K, D, pins, _ = law.assemble()
     x0, J0, Kg = np.zeros(6), np.zeros((n_p, 3)), np.zeros((6, 6))
-    if thrust != 0.0:
-        x0, J0, Kg = static_preload(db.C, law, float(thrust), thrust_position)
+    if thrust != 0.0 or steady is not None:
+        x0, J0, Kg = static_preload(db.C, law, float(thrust), thrust_position, thrust_direction, steady)
     Zs = Z - Kg + K[None] + 1j * w[:, None, None] * D[None]
+    if steady is not None:
+        Zs = Zs + steady.stiffness[None] + 1j * w[:, None, None] * steady.damping[None]
     nb = X.shape[1]
-    x = np.empty((w.size, nb, 6), dtype=complex)
-    lam = np.empty((w.size, nb, pins.shape[0]), dtype=complex)
+    L = np.zeros((0, 6)) if loads is None else np.atleast_2d(np.asarray(loads, dtype=float))
+    nl = L.shape[0]
+    x = np.empty((w.size, nb + nl, 6), dtype=complex)
+    lam = np.empty((w.size, nb + nl, pins.shape[0]), dtype=complex)
     for iw in range(w.size):
-        xi, li, _ = solve_saddle(Zs[iw], pins, X[iw].T)
+        rhs = X[iw].T if not nl else np.concatenate([X[iw].T, L.T.astype(complex)], axis=1)
+        xi, li, _ = solve_saddle(Zs[iw], pins, rhs)
         x[iw], lam[iw] = xi.T, li.T
     J = law.reactions(x, lam, w[:, None])
-    return HingedResponse(omega=w, beta_deg=_beta(db, beta_deg), points=P, normals=N, law=law, x=x, J=J,
-                          x_static=x0, J_static=J0)
+    extra = {} if loads is None else {"x_loads": x[:, nb:], "J_loads": J[:, nb:]}
+    return HingedResponse(omega=w, beta_deg=_beta(db, beta_deg), points=P, normals=N, law=law, x=x[:, :nb],
+                          J=J[:, :nb], x_static=x0, J_static=J0, **extra)

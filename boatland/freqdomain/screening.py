@@ -58,10 +58,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from boatland.errors import BoatlandInputError
-from boatland.freqdomain.rao import hinged_rao
-from boatland.landing.law import normal_follows
 from boatland.freqdomain.landing import LandingSetup
-from boatland.freqdomain.statistics import (ACCEPT_PRESETS, ACCESS_DURATION, DEFAULT_STATISTICS, HS_MAX, MODES, STATISTICS, LimitTable,
+from boatland.freqdomain.statistics import (SlowSwing, ACCEPT_PRESETS, ACCESS_DURATION, DEFAULT_STATISTICS, HS_MAX, MODES, STATISTICS, LimitTable,
                                             accept_probability, correlation_matrix, distinct_events,
                                             incident_probability, limiting_hs, response_correlation,
                                             spectral_moments)
@@ -70,7 +68,7 @@ from boatland.sea.spectra import SpectrumPart
 from boatland.vessel.database import HydroDB
 from boatland.waves.spectra import spreading_cos2s
 
-__all__ = ["METHODS", "SHEAR_FACTORS", "SeaResponse", "ShearSweep", "SlipTransfer", "default_omega", "landed_response",
+__all__ = ["METHODS", "SHEAR_FACTORS", "SeaResponse", "ShearSweep", "SlipTransfer", "default_omega", "gust_moments", "landed_response",
            "screening_grid", "sea_response", "shear_sweep", "slip_transfer"]
 
 METHODS = ("improved", "wu")
@@ -97,6 +95,11 @@ class SlipTransfer:
         Static contact force on the vessel at each contact [N]; ``N_static`` (Np,) its normal part.
     method : str
     setup : LandingSetup
+    background : SlowSwing or None
+        The margins' and roll's part that does not grow with the waves: the swing in the wind's gusts
+        (:func:`gust_moments`); None without.
+    motions : ndarray of complex, shape (Nw, Nβ, 6), or None
+        The landed vessel's motions per unit wave amplitude (for the hull drag's linearisation).
     """
 
     omega: np.ndarray
@@ -108,6 +111,8 @@ class SlipTransfer:
     N_static: np.ndarray
     method: str
     setup: LandingSetup
+    background: SlowSwing | None = None
+    motions: np.ndarray | None = None
 
 
 def _directions(n: np.ndarray) -> np.ndarray:
@@ -122,24 +127,9 @@ def default_omega(db: HydroDB, n: int = 600) -> np.ndarray:
     return np.linspace(max(0.05, float(db.omega[0])), float(db.omega[-1]), n)
 
 
-def landed_response(db: HydroDB, setup: LandingSetup, omega, beta_deg, method: str = "improved"):
-    """The landed vessel's response (:func:`hinged_rao`) as the screening takes it: ``"improved"`` —
-    the time domain's contacts (normal and shear laws, the rigid stick when k_t = ∞), follower thrust,
-    the pile's scattered wave when the setup has one; ``"wu"`` — a rigid hinge in the open sea."""
-    if method == "wu":
-        return hinged_rao(db, omega, setup.points, beta_deg=beta_deg, normal=setup.normals,
-                          additional_damping=setup.additional_damping)
-    return hinged_rao(setup.near_pile(db, beta_deg), omega, setup.points, beta_deg=beta_deg, normal=setup.normals,
-                      stiffness=setup.stiffness, damping=setup.damping, shear_stiffness=setup.shear_stiffness,
-                      shear_damping=setup.shear_damping, sideways=setup.sideways,
-                      thrust=setup.thrust, thrust_position=setup.thrust_position,
-                      additional_damping=setup.additional_damping,
-                      **_follows(normal_follows(setup.fender_width, np.broadcast_to(setup.tube_radius, (setup.n_points,)),
-                                                setup.thrust / setup.n_points / setup.stiffness)))
-
-
-def _follows(spec: dict) -> dict:
-    return {"normal_follows": spec["follows"], "tube_radius": spec.get("radius", np.inf)}
+def landed_response(db: HydroDB, setup: LandingSetup, omega, beta_deg, method: str = "improved", loads=None):
+    """The landed vessel's response as the screening takes it (:meth:`LandingSetup.response`)."""
+    return setup.response(db, omega, beta_deg, method, loads)
 
 
 def slip_transfer(db: HydroDB, setup: LandingSetup, *, omega=None, beta_deg=None, method: str = "improved",
@@ -186,8 +176,27 @@ def slip_transfer(db: HydroDB, setup: LandingSetup, *, omega=None, beta_deg=None
         names += [f"{m} {c}" for m in MODES]
     H = np.concatenate(H + [r.x[..., 3:4]], axis=-1)
     cap = np.concatenate(cap + [[math.radians(setup.roll_limit_deg)]])
+    background = None
+    if method != "wu" and setup.steady is not None and setup.steady.gust_pattern is not None:
+        background = SlowSwing(gust_moments(db, setup), setup.steady.linear_share)
     return SlipTransfer(omega=w, beta_deg=b, H=H, capacity=cap, names=tuple(names + ["roll"]), J_static=J0,
-                        N_static=np.einsum("pk,pk->p", setup.normals, J0), method=method, setup=setup)
+                        N_static=np.einsum("pk,pk->p", setup.normals, J0), method=method, setup=setup,
+                        background=background, motions=r.x)
+
+
+def gust_moments(db: HydroDB, setup: LandingSetup) -> np.ndarray:
+    r"""Spectral moments (R, 3) of every margin and of roll answering the gusts,
+    :math:`m_k = \int \omega^k |H_g(\omega)|^2 S_g(\omega)\,d\omega`, with :math:`H_g` the margins per unit
+    gust force g (:class:`boatland.landing.law.SteadyLoad`: pattern f_g, spectrum S_g) from the landed response
+    to f_g on the gusts' own grid (:meth:`LandingSetup.gust_response`, trapezoid)."""
+    w, wt, x, J = setup.gust_response(db)
+    Hg = []
+    for c in range(setup.n_points):
+        n = setup.normals[c]
+        Hg.append(J[:, c] @ (_directions(n) - setup.mu * n).T)   # (Nw, 4)
+    Hg = np.concatenate(Hg + [x[:, 3:4]], axis=-1)
+    S = setup.steady.gust_spectrum(w)
+    return np.einsum("w,w,wr,wk->rk", S, wt, np.abs(Hg) ** 2, w[:, None] ** np.arange(3)[None, :])
 
 
 def screening_grid(db: HydroDB, setup: LandingSetup, Tp, beta_deg=None, *, accept=ACCEPT_PRESETS["best"],
@@ -234,7 +243,7 @@ def screening_grid(db: HydroDB, setup: LandingSetup, Tp, beta_deg=None, *, accep
     keep = distinct_events(m[..., 0], tr.capacity, response_correlation(tr, Tp, sea=sea, water_depth=h, g=db.g))
     return limiting_hs(m, tr.capacity, Tp, tr.beta_deg, accept=accept, statistics=statistics,
                        access_duration=access_duration, method=method, captured=captured, names=tr.names,
-                       keep=keep)
+                       keep=keep, background=tr.background)
 
 
 # --------------------------------------------------------------------------------------- one given sea
@@ -293,6 +302,11 @@ class SeaResponse:
         return float(-np.expm1(-float(np.sum(per_mode)) * self.access_duration))
 
 
+#: Passes of the hull drag's linearisation with the waves' velocities in :func:`sea_response` (the second
+#: changes the probabilities of the validation cases by < 1 % of the first's change).
+DRAG_PASSES = 2
+
+
 def sea_response(db: HydroDB, setup: LandingSetup, parts, *, water_depth: float | None = None,
                  statistics: str = DEFAULT_STATISTICS, method: str = "improved", access_duration: float = ACCESS_DURATION,
                  omega=None, spreading_step_deg: float = 5.0) -> SeaResponse:
@@ -345,12 +359,21 @@ def sea_response(db: HydroDB, setup: LandingSetup, parts, *, water_depth: float 
     dw = np.diff(w)
     wt[:-1] += dw / 2
     wt[1:] += dw / 2
+    if method != "wu" and setup.drag_linearisable:
+        # the hull's drag sees the waves' velocities too: linearise it with them (twice: they change a little)
+        base = setup
+        for _ in range(DRAG_PASSES):
+            sig = base.strip_sigma(w, (S * wt[None, :]).T, tr.motions)
+            tr = slip_transfer(db, base.with_drag_linearised(db, wave_sigma=sig), omega=omega, beta_deg=beta,
+                               method=method)
     m = np.einsum("bw,w,wbr,wk->rk", S, wt, np.abs(tr.H) ** 2, w[:, None] ** np.arange(3)[None, :])
     cov = np.einsum("bw,w,wbi,wbj->ij", S, wt, tr.H, tr.H.conj()).real
     keep = distinct_events(m[None, None, :, 0], tr.capacity, correlation_matrix(cov)[None, None])
     Tc = parts[int(np.argmax([p.Hs for p in parts]))].Tp
     pc, pa, per_mode = incident_probability(1.0, m[None, None], tr.capacity, [Tc], statistics=statistics,
-                                            access_duration=access_duration, keep=keep)
+                                            access_duration=access_duration, keep=keep, background=tr.background)
+    if tr.background is not None:
+        m = m + tr.background.moments   # the gusts: independent of the waves, their variances add
     return SeaResponse(sigma=np.sqrt(m[:, 0]), m=m, capacity=tr.capacity, names=tr.names, p_cycle=float(pc[0, 0]),
                        p_access=float(pa[0, 0]), cycle_period=float(Tc), statistics=statistics, method=method,
                        per_mode=np.asarray(per_mode[0, 0], dtype=float), access_duration=float(access_duration))

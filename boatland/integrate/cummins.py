@@ -42,6 +42,8 @@ from numba import njit, objmode
 
 from boatland.contact.fender import (OFF, accumulate_sliding, contact_forces, contact_state_arrays, contact_states,
                                      contact_workspace, decide_modes)
+from boatland.loads.drag import add_drag
+from boatland.loads.skipper import skipper_measure, skipper_state, skipper_thrust
 from boatland.rigid import add_point_force, rotation_matrix
 from boatland.rk4 import A_NEXT, B, C_HALF_STEPS
 
@@ -70,13 +72,16 @@ _B = B
 
 
 @njit(cache=True, _nrt=False, forceinline=True)
-def _thrust(R, T, r_p, out):
-    """Generalised force of a push T along the body x axis applied at body point r_p, with the body
-    rotation ``R`` (exact rotation)."""
+def _thrust(R, T, r_p, e_T, out):
+    """Generalised force of a push T along the body direction ``e_T`` (unit, (3,)) applied at body point
+    r_p, with the body rotation ``R`` (exact rotation)."""
     rx = R[0, 0] * r_p[0] + R[0, 1] * r_p[1] + R[0, 2] * r_p[2]
     ry = R[1, 0] * r_p[0] + R[1, 1] * r_p[1] + R[1, 2] * r_p[2]
     rz = R[2, 0] * r_p[0] + R[2, 1] * r_p[1] + R[2, 2] * r_p[2]
-    add_point_force(rx, ry, rz, R[0, 0], R[1, 0], R[2, 0], T, out)
+    d0 = R[0, 0] * e_T[0] + R[0, 1] * e_T[1] + R[0, 2] * e_T[2]
+    d1 = R[1, 0] * e_T[0] + R[1, 1] * e_T[1] + R[1, 2] * e_T[2]
+    d2 = R[2, 0] * e_T[0] + R[2, 1] * e_T[1] + R[2, 2] * e_T[2]
+    add_point_force(rx, ry, rz, d0, d1, d2, T, out)
 
 
 @njit(cache=True, _nrt=False, forceinline=True)
@@ -179,19 +184,24 @@ def _state_space(v, z, ss_A, ss_B, ss_C, ss_seg, rows, st, kz, F):
 
 
 @njit(cache=True, _nrt=False, forceinline=True)
-def _forces(t_idx, c2, x, v, z, v_n, R, dt, H, C, Bv, Bq, F_ext, thrust, r_p, conv, memory, st, kz, F):
+def _forces(t_idx, c2, x, v, z, v_n, R, dt, H, C, Bv, Bq, F_ext, T, push, flow, conv, memory, st, kz, F):
     """All forces but the contacts, into ``F``; the state-space derivative into row ``st`` of ``kz``.
 
     The stage is ``c2`` half steps into the step (0, 1, 2: c = 0, ½, 1), at half-step index ``t_idx``;
-    ``v_n`` is the velocity at the step start, ``H`` (3, 6) the history sums of the step.
+    ``v_n`` is the velocity at the step start, ``H`` (3, 6) the history sums of the step. ``T`` is the
+    push [N] at this stage, ``push`` = (r_p, e_T) its body point and direction; ``flow`` = (on, U, table,
+    par, ramp, strips) the current's drag on the hull's strips (:func:`boatland.loads.drag.add_drag`) when
+    ``on``, its speed × ramp at the half steps.
     """
     Kh, pairs_i, pairs_j, ss_A, ss_B, ss_C, ss_seg, ss_rows = memory
     for d in range(6):
         F[d] = F_ext[t_idx, d] - Bv[d] * v[d] - Bq[d] * abs(v[d]) * v[d]
         for e in range(6):
             F[d] -= C[d, e] * x[e]
-    if thrust[t_idx] != 0.0:
-        _thrust(R, thrust[t_idx], r_p, F)
+    if T != 0.0:
+        _thrust(R, T, push[0], push[1], F)
+    if flow[0]:
+        add_drag(R, v, flow[1], flow[4][t_idx], flow[2], flow[3], flow[5], F)
     if conv:
         cdt = 0.5 * c2 * dt
         for p in range(pairs_i.shape[0]):
@@ -205,13 +215,13 @@ def _forces(t_idx, c2, x, v, z, v_n, R, dt, H, C, Bv, Bq, F_ext, thrust, r_p, co
 
 
 @njit(cache=True, _nrt=False, forceinline=True)
-def _stage(n, st, x, v, z, v_n, R, dt, H, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, conv, memory, ct, cs, ws,
+def _stage(n, st, x, v, z, v_n, R, dt, H, Mt_inv, C, Bv, Bq, F_ext, T, push, flow, conv, memory, ct, cs, ws,
            v_tol, kv, kz, scratch, records):
     """Stage ``st`` (0–3) of step ``n`` at the stage state (x, v, z): accelerations into row ``st`` of
     ``kv`` (4, 6) and the state-space derivative into row ``st`` of ``kz`` (4, ns), contacts included.
 
     ``v_n`` is the velocity at the step start, ``R`` the body rotation at the stage state (thrust
-    direction, contact points), ``ct`` the contacts (:class:`boatland.contact.fender.Contacts`) and
+    direction, contact points), ``T`` the push at the stage, ``ct`` the contacts (:class:`boatland.contact.fender.Contacts`) and
     ``cs`` their state. The first stage closes the previous step of every contact and decides the
     stick–slip modes of this one at the step start (:func:`boatland.contact.fender.decide_modes`),
     reusing its last solve when final. ``scratch`` = (acc, F) (6,) each, ``records`` = (f_t, f_n,
@@ -222,7 +232,7 @@ def _stage(n, st, x, v, z, v_n, R, dt, H, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p,
     kin, solve, F_try = ws
     f_t, f_n, needed, available = records
     acc, F = scratch
-    _forces(t_idx, c2, x, v, z, v_n, R, dt, H, C, Bv, Bq, F_ext, thrust, r_p, conv, memory, st, kz, F)
+    _forces(t_idx, c2, x, v, z, v_n, R, dt, H, C, Bv, Bq, F_ext, T, push, flow, conv, memory, st, kz, F)
     if ct.P.shape[0] == 0:
         for d in range(6):
             a = 0.0
@@ -309,10 +319,10 @@ def _wait_for_gate(gate, n):
 
 
 @njit(cache=True, nogil=True)
-def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
+def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, e_T, skipper, flow, x0, v0,
                 conv, Kh, pairs_i, pairs_j, n_hist, ss_A, ss_B, ss_C, ss_seg, ss_rows,
                 ct, v_tol, limit_trans, limit_rot, out_x, out_v, out_mode, out_fn, out_ft, out_need,
-                out_avail, out_tpos, out_slide, out_work, progress, gate):
+                out_avail, out_tpos, out_slide, out_work, out_thrust, progress, gate):
     """Integrate the Cummins equation with classic RK4; returns ``(status, last_step)``.
 
     Runs without the GIL (``nogil``): another thread may poll ``progress`` meanwhile. All buffers are
@@ -333,7 +343,16 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
     F_ext : (2 n_steps + 1, 6)
         External force without memory (wave excitation), at half steps t = k Δt / 2.
     thrust : (2 n_steps + 1,)
-        Push along the body x axis [N] at half steps (ramp included); ``r_p`` (3,) its body point.
+        Push [N] at half steps (ramp included) along the body direction ``e_T`` (3,, unit) at the body
+        point ``r_p`` (3,) — the nominal push when a controller acts.
+    skipper : (9,)
+        The push controller's parameters (:meth:`boatland.loads.skipper.Skipper.kernel`; all zero: none):
+        from its first step on, the push of each step is :func:`boatland.loads.skipper.skipper_thrust`,
+        held over the step.
+    flow : tuple
+        (on, U (3,), table (4, n), par (8,), ramp (2 n_steps + 1,), strips (n, 3)): the current's drag on
+        the moving hull's strips at every stage (:func:`boatland.loads.drag.add_drag`), its velocity U times
+        the ramp at the half steps; ``on`` False: none.
     x0, v0 : (6,)
         Initial displacement and velocity.
     conv : bool
@@ -359,6 +378,8 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
     out_slide : (n_steps + 1, Nc, 2)
         Sliding of the fender over the tube during the step that ended at each row [m]; ``out_work``
         (n_steps + 1, Nc) the friction work of that step [J] (never positive).
+    out_thrust : (n_steps + 1,)
+        The push at each step start [N] (the controller's when one acts).
     progress : (1,) int64
         Progress counter: rows below it are final (set as each step's record is written), ``last`` on
         return.
@@ -393,6 +414,11 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
         vbuf[0, d] = v[d]
         vbuf[nb, d] = v[d]
     H = np.zeros((3, 6))  # history sums at c = 0, ½, 1 (H[0] is the whole integral at t_n)
+    push = (r_p, e_T)
+    controlled = skipper[0] != 0.0
+    sk_buf, sk_state = skipper_state(skipper)
+    held = False
+    T_held = 0.0
     scratch = (np.zeros(6), np.zeros(6))  # acc, F of one stage
     kx, kv, kz = np.zeros((4, 6)), np.zeros((4, 6)), np.zeros((4, n_s))  # stage derivatives
     xs, vs, zs = np.zeros(6), np.zeros(6), np.zeros(n_s)  # stage state
@@ -400,15 +426,21 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, x0, v0,
         progress[0] = n
         if conv:
             _history(vbuf, head, count, Kh, pairs_i, pairs_j, dt, H)
+        if controlled:
+            held, T_held = skipper_thrust(n, thrust, skipper, sk_buf, sk_state)
         for st in range(4):
             _trial_state(st, _A_NEXT[st - 1] * dt, x, v, z, kx, kv, kz, xs, vs, zs)
             R = rotation_matrix(xs[3], xs[4], xs[5])  # once per stage: thrust direction, contact points
+            T = T_held if held else thrust[2 * n + _C2[st]]
             # stage 1 decides the contact modes of the step and is the step-start record
-            _stage(n, st, xs, vs, zs, v, R, dt, H, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, conv, memory, ct, cs, ws,
-                   v_tol, kv, kz, scratch, records)
+            _stage(n, st, xs, vs, zs, v, R, dt, H, Mt_inv, C, Bv, Bq, F_ext, T, push, flow, conv, memory, ct, cs,
+                   ws, v_tol, kv, kz, scratch, records)
             if st == 0:
                 _record(n, x, v, cs, records, tpos, out_x, out_v, out_mode, out_fn, out_ft, out_need,
                         out_avail, out_tpos, out_slide, out_work)
+                out_thrust[n] = T
+                if controlled:
+                    skipper_measure(n, records[1], sk_buf, sk_state)
                 if _slid_off(cs):
                     progress[0] = n
                     return STATUS_SLID_OFF, n

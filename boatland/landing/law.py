@@ -39,8 +39,39 @@ import numpy as np
 
 from boatland.vessel.database import HydroDB, skew
 
-__all__ = ["ContactLaw", "LandedModes", "landed_modes", "normal_follows", "point_map", "preload_stiffness",
-           "solve_saddle", "static_preload", "tangents"]
+__all__ = ["ContactLaw", "LandedModes", "SteadyLoad", "landed_modes", "normal_follows", "point_map",
+           "preload_stiffness", "solve_saddle", "static_preload", "tangents"]
+
+_EX = np.array([1.0, 0.0, 0.0])
+
+
+@dataclass(frozen=True, eq=False)
+class SteadyLoad:
+    r"""Steady loads on the landed vessel besides the push, linearised: :math:`F^s + \delta F`,
+    :math:`\delta F = -K^s x - B^s\dot x` (current, mean wind and mean drift:
+    :class:`boatland.landing.environment.Environment`).
+
+    Attributes
+    ----------
+    force : ndarray, shape (6,)
+        The load at the start pose [N, N m] (local frame): its time average.
+    stiffness, damping : ndarray, shape (6, 6)
+        :math:`K^s = -\partial F/\partial x`, :math:`B^s = -\partial F/\partial \dot x`.
+    gust_pattern : ndarray, shape (6,), or None
+        A slowly varying part :math:`f_g\,g(t)` besides the mean (the wind's gusts): its pattern f_g ...
+    gust_spectrum : callable or None
+        ... and the one-sided spectrum :math:`S_g(\omega)` [per rad/s] of the zero-mean Gaussian g(t).
+    linear_share : float
+        The share of the slow swing's equivalent damping that is linear (1 unless the hull's quadratic drag is
+        linearised statistically: :meth:`boatland.freqdomain.landing.LandingSetup.with_drag_linearised`).
+    """
+
+    force: np.ndarray
+    stiffness: np.ndarray
+    damping: np.ndarray
+    gust_pattern: np.ndarray | None = None
+    gust_spectrum: object = None
+    linear_share: float = 1.0
 
 
 def point_map(point) -> np.ndarray:
@@ -63,7 +94,7 @@ def tangents(n: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return np.cross(n, th), th
 
 
-def preload_stiffness(thrust: float, thrust_position, forces, points) -> np.ndarray:
+def preload_stiffness(thrust: float, thrust_position, forces, points, direction=_EX) -> np.ndarray:
     r"""Linearised generalised force of the static loads as the vessel rotates: :math:`\delta F = K_g x`.
 
     The time domain applies the thrust T along the vessel's own x axis at body point :math:`r_T`
@@ -76,7 +107,8 @@ def preload_stiffness(thrust: float, thrust_position, forces, points) -> np.ndar
 
     (forces :math:`T\,\theta \times e_x` — Grøtting 2015 eq. 3.62–3.63 — and moments
     :math:`\theta \times (r_T \times T e_x) + \sum_c (\theta \times r_c) \times J^0_c`). In the
-    frequency domain it enters as the stiffness :math:`-K_g`.
+    frequency domain it enters as the stiffness :math:`-K_g`. A push along another body direction
+    :math:`e_T` (``direction``) replaces :math:`e_x`.
 
     Parameters
     ----------
@@ -94,7 +126,7 @@ def preload_stiffness(thrust: float, thrust_position, forces, points) -> np.ndar
     K_g : ndarray, shape (6, 6)
         [N/m, N/rad, N m/rad]; acts on the rotations only (columns 4–6).
     """
-    ex = np.array([1.0, 0.0, 0.0])
+    ex = np.asarray(direction, dtype=float).reshape(3)
     Kg = np.zeros((6, 6))
     Kg[:3, 3:] = -thrust * skew(ex)
     Kg[3:, 3:] = -skew(np.cross(np.asarray(thrust_position, dtype=float), thrust * ex))
@@ -269,14 +301,17 @@ class ContactLaw:
         return J
 
 
-def static_preload(C: np.ndarray, law: ContactLaw, thrust: float, thrust_position):
+def static_preload(C: np.ndarray, law: ContactLaw, thrust: float, thrust_position, direction=_EX,
+                   steady: SteadyLoad | None = None):
     r"""Static equilibrium on the landing under the follower thrust: (x⁰, J⁰, K_g(J⁰)).
 
-    :math:`(C + K_{springs} - K_g(J^0))\,x^0 = T[e_x;\ r_T\times e_x] + \mathcal T^\top\lambda^0` with
-    the pins :math:`\mathcal T x^0 = 0`: the preload's own stiffness tilts the thrust and turns the
+    :math:`(C + K_{springs} - K_g(J^0) + K^s)\,x^0 = T[e_T;\ r_T\times e_T] + F^s + \mathcal T^\top\lambda^0`
+    with the pins :math:`\mathcal T x^0 = 0`: the preload's own stiffness tilts the thrust and turns the
     contact moments by the static rotation. A fixed point in J⁰ (K_g is O(T/C₅₅) of the restoring: a
     few iterations). For a rigid hinge pinned in all directions this is the static vertical force of
     Grøtting (2015) eq. 3.56–3.61, plus the tilt of the thrust by the static pitch that §3.4 neglects.
+    ``direction``: the push's body direction e_T (default e_x); ``steady``: the steady loads besides the
+    push (:class:`SteadyLoad`: current, mean wind and drift), their force F^s and stiffness K^s.
 
     Raises
     ------
@@ -284,8 +319,12 @@ def static_preload(C: np.ndarray, law: ContactLaw, thrust: float, thrust_positio
         The landing cannot hold the thrust statically, or the iteration does not converge.
     """
     rT = np.asarray(thrust_position, dtype=float).reshape(3)
-    F_T = thrust * np.concatenate([[1.0, 0.0, 0.0], np.cross(rT, [1.0, 0.0, 0.0])])
+    eT = np.asarray(direction, dtype=float).reshape(3)
+    F_T = thrust * np.concatenate([eT, np.cross(rT, eT)])
     K, _, pins, _ = law.assemble()
+    if steady is not None:
+        F_T = F_T + steady.force
+        K = K + steady.stiffness
     J0 = np.zeros((law.n_points, 3))
     Kg = np.zeros((6, 6))
     last = np.inf
@@ -303,7 +342,7 @@ def static_preload(C: np.ndarray, law: ContactLaw, thrust: float, thrust_positio
         done = change <= 1e-12 or (change < 1e-8 and change > 0.5 * last)
         last = change
         J0 = J_new
-        Kg = preload_stiffness(thrust, rT, J0, law.points) + law.geometric_stiffness(J0)
+        Kg = preload_stiffness(thrust, rT, J0, law.points, eT) + law.geometric_stiffness(J0)
         if done:
             return x0, J0, Kg
     raise ValueError("the static equilibrium under the thrust did not converge: the preload's geometric stiffness "
@@ -333,8 +372,8 @@ class LandedModes:
         return 2 * np.pi / self.omega
 
 
-def landed_modes(db: HydroDB, law: ContactLaw | None, thrust: float = 0.0, thrust_position=(0.0, 0.0, 0.0)) \
-        -> LandedModes:
+def landed_modes(db: HydroDB, law: ContactLaw | None, thrust: float = 0.0, thrust_position=(0.0, 0.0, 0.0),
+                 direction=_EX, steady: SteadyLoad | None = None) -> LandedModes:
     r"""Natural modes of the vessel on its landing (or free, ``law`` None), undamped, with the added
     mass at each mode's own frequency:
 
@@ -352,8 +391,8 @@ def landed_modes(db: HydroDB, law: ContactLaw | None, thrust: float = 0.0, thrus
     if law is not None:
         Kc, _, pins, _ = law.assemble()
         if thrust:
-            _, _, Kg = static_preload(db.C, law, thrust, thrust_position)
-    Keff = db.C + Kc - Kg
+            _, _, Kg = static_preload(db.C, law, thrust, thrust_position, direction, steady)
+    Keff = db.C + Kc - Kg + (steady.stiffness if steady is not None else 0.0)
     Keff = 0.5 * (Keff + Keff.T)
     if pins.shape[0]:
         _, sv, Vt = np.linalg.svd(pins)

@@ -26,6 +26,7 @@ import numpy as np
 from boatland.contact.fender import Contacts, no_contacts
 from boatland.irf.impulse import IRFSettings
 from boatland.landing.contacts import ContactPeriod, FenderOnLanding, fender_on_landing
+from boatland.landing.environment import Environment
 from boatland.landing.law import ContactLaw
 from boatland.scenario.schema import DT_MAX
 from boatland.sea.pile import Pile
@@ -85,6 +86,9 @@ class Setup:
         The monopile whose scattered wave the vessel feels (:class:`boatland.sea.pile.Pile`: radius, axis,
         the sea's water depth): ``landing.diffraction``, by default on when ``db`` has a hull mesh (and
         there are waves).
+    environment : Environment
+        The loads beside the waves: current, wind, wave drift, the push's direction and the skipper's
+        control (:class:`boatland.landing.environment.Environment`).
     """
 
     scenario: object
@@ -95,6 +99,7 @@ class Setup:
     fender: FenderOnLanding | None
     waves: object
     pile: Pile | None
+    environment: Environment
 
     @classmethod
     def of(cls, scenario, db: HydroDB, given: "Setup | None" = None) -> "Setup":
@@ -117,7 +122,7 @@ class Setup:
         n = int(math.ceil(scenario.simulation.duration / dt - 1e-9))
         waves = None if scenario.sea is None else scenario.sea.model(db)
         return cls(scenario=scenario, db=db, dt=dt, n_steps=n, start_pose=pose, fender=fender, waves=waves,
-                   pile=_pile(scenario, db, waves))
+                   pile=_pile(scenario, db, waves), environment=Environment.of(scenario, db))
 
     @property
     def source(self) -> str:

@@ -20,6 +20,9 @@ from typing import Any
 import numpy as np
 
 from boatland.errors import BoatlandInputError, BoatlandWarning
+from boatland.loads.current import Current
+from boatland.loads.skipper import Skipper
+from boatland.loads.wind import Wind
 from boatland.scenario.parts import (Fender, InitialState, Landing, Sea, Simulation, Strut, Thrust,
                                            VesselSetup, derive_position, rotation_2d, unit)
 from boatland.scenario.schema import (FENDER_PRESET_ALIASES, FENDER_PRESETS, FENDER_REQUIRED, LANDING_COMPACT, SCENARIO_SCHEMA,
@@ -29,7 +32,7 @@ from boatland.sea.spectra import SpectrumPart, spectrum_part_problems
 from boatland.sea.states import MeasuredRecord, RegularWave, SeaState
 from boatland.tomlspec import Problems, SpecError, did_you_mean
 
-__all__ = ["Context", "fender", "initial", "landing", "sea", "simulation", "thrust", "vessel"]
+__all__ = ["Context", "fender", "flows", "initial", "landing", "sea", "simulation", "thrust", "vessel"]
 
 #: Fender key defaults when neither the file nor a preset gives them (Stribeck shape of Ferreira
 #: González 2023 Table 5.4, no viscous term; the compliant rubber of Grøtting 2015 §3.2.2; a point).
@@ -194,7 +197,41 @@ def thrust(ctx: Context) -> Thrust | None:
     d = ctx.data["thrust"]
     if "fender" not in ctx.doc:
         ctx.notes.append("[thrust] without [fender]: nothing holds the vessel, the thrust accelerates it along x")
-    return Thrust(force=d["force"], position=tuple(d["position"]), ramp=d["ramp"])
+    control = Skipper.from_table(d["control"]) if "control" in d else Skipper()
+    if control.active and "fender" not in ctx.doc:
+        ctx.add("thrust.control.kind", "'hold_force' holds the fender's normal force: it needs a [fender]")
+    if control.max_force is not None and control.max_force < control.min_force:
+        ctx.add("thrust.control.max_force", f"{control.max_force:g} N is below min_force = {control.min_force:g} N")
+    return Thrust(force=d["force"], position=tuple(d["position"]), ramp=d["ramp"],
+                  direction_deg=d.get("direction_deg", "trim"), control=control)
+
+
+# ---------------------------------------------------------------------------------------- current, wind
+def flows(ctx: Context, heading: float) -> tuple[Current | None, Wind | None]:
+    """The ``[current]`` and ``[wind]`` of the file (directions made global with the vessel's heading)."""
+    out = []
+    for key, cls in (("current", Current), ("wind", Wind)):
+        d = ctx.data.get(key)
+        if d is None or ctx.problems.has(key):
+            out.append(None)
+            continue
+        raw = ctx.raw(key)
+        if "direction_deg" in raw and "relative_direction_deg" in raw:
+            ctx.add(f"{key}.relative_direction_deg", f"give either {key}.direction_deg or "
+                                                     f"{key}.relative_direction_deg, not both")
+        if "table" in d and any(k in raw for k in ("c_x", "c_y", "c_n")):
+            ctx.add(f"{key}.table", f"give either {key}.table or the amplitudes c_x, c_y, c_n, not both")
+        t = d.get("table")
+        if t is not None:
+            a = list(t["angles_deg"])
+            if any(len(t[k]) != len(a) for k in ("cx", "cy", "cn")):
+                ctx.add(f"{key}.table", "angles_deg, cx, cy and cn must have the same length")
+            elif a[0] != 0.0 or a[-1] not in (180.0, 360.0) or any(b <= c for c, b in zip(a, a[1:])):
+                ctx.add(f"{key}.table.angles_deg", "must increase from 0 to 180 (port–starboard symmetric) or to 360")
+            elif a[-1] == 360.0 and any(t[k][0] != t[k][-1] for k in ("cx", "cy", "cn")):
+                ctx.add(f"{key}.table", "the coefficients at 0° and 360° must be equal")
+        out.append(cls.from_table(d, heading))
+    return out[0], out[1]
 
 
 # ---------------------------------------------------------------------------------------- vessel
@@ -348,7 +385,7 @@ def sea(ctx: Context, heading: float) -> Sea | None:
         return None
     waves, peak, shortest = result
     return Sea(kind=mode, waves=waves, water_depth=None if depth is None else h, peak_period=peak,
-               shortest_period=shortest)
+               shortest_period=shortest, drift=d.get("drift", "none"))
 
 
 def _direction(d: Mapping, heading: float) -> float:

@@ -69,7 +69,9 @@ def trial_inputs(scenario) -> dict:
         ``scenario``, ``vessel``, ``sea`` (text), ``Hs`` [m] and ``Tp`` [s] (the first spectrum's; the
         combined Hs of a sum; None for regular, measured or calm seas, which give ``H``/``T`` or only the
         text), ``relative_direction_deg`` and ``heading`` (its name), ``thrust`` [N], ``mu_s``, ``mu_k``,
-        ``shear_stiffness`` [N/m per contact] (None: rigid stick), ``seed``, ``duration`` [s].
+        ``shear_stiffness`` [N/m per contact] (None: rigid stick), ``seed``, ``duration`` [s]; when given,
+        ``current`` and ``wind`` (``speed`` [m/s], ``relative_direction_deg`` towards), ``drift``, ``skipper``
+        and ``push_direction_deg``.
     """
     out = {"scenario": scenario.name, "vessel": scenario.vessel.database}
     out.update(_sea(scenario))
@@ -81,6 +83,18 @@ def trial_inputs(scenario) -> dict:
     out["shear_stiffness"] = None if f is None or f.rigid else f.shear_stiffness
     out["seed"] = scenario.simulation.seed
     out["duration"] = scenario.simulation.duration
+    heading = scenario.vessel.heading_deg
+    for key in ("current", "wind"):          # only when given: the waves-only inputs stay as they were
+        flow = getattr(scenario, key)
+        if flow is not None:
+            out[key] = {"speed": flow.speed, "relative_direction_deg": round((flow.direction_deg - heading) % 360.0, 9)}
+    if scenario.sea is not None and scenario.sea.drift != "none":
+        out["drift"] = scenario.sea.drift
+    thr = scenario.thrust
+    if thr is not None and thr.control.active:
+        out["skipper"] = thr.control.kind
+    if thr is not None and not thr.trimmed:
+        out["push_direction_deg"] = float(thr.direction_deg)
     return out
 
 
@@ -97,9 +111,15 @@ def short_inputs_text(inputs: dict) -> str:
     if rel is not None:
         parts.append(f"{inputs.get('heading', heading_name(rel))} ({rel:g}°)")
     push = [f"push {_force(inputs['thrust'])}" if inputs.get("thrust") is not None else "no push"]
+    if inputs.get("skipper") == "hold_force":
+        push[0] += " (held by the skipper)"
     if inputs.get("mu_s") is not None:
         push.append(f"μ_s {inputs['mu_s']:g}")
-    return ", ".join(p for p in parts if p) + "; " + ", ".join(push)
+    flows = [f"{k} {inputs[k]['speed']:g} m/s towards {inputs[k]['relative_direction_deg']:g}°"
+             for k in ("current", "wind") if k in inputs]
+    if inputs.get("drift"):
+        flows.append(f"wave drift {inputs['drift']}")
+    return ", ".join(p for p in parts if p) + "; " + ", ".join(push) + ("; " + ", ".join(flows) if flows else "")
 
 
 def inputs_text(inputs: dict) -> str:

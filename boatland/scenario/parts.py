@@ -24,6 +24,7 @@ from typing import Any
 
 import numpy as np
 
+from boatland.loads.skipper import Skipper
 from boatland.vessel.database import HydroDB
 from boatland.sea.states import MeasuredRecord, RegularWave, SeaState
 
@@ -247,11 +248,22 @@ class Fender:
 
 @dataclass(frozen=True, kw_only=True)
 class Thrust:
-    """Bollard push ``force`` [N] along the vessel's x axis at ``position`` (body) [m], ramped in over ``ramp`` [s]."""
+    """Bollard push ``force`` [N] at ``position`` (body) [m], ramped in over ``ramp`` [s], along the body's
+    horizontal direction ``direction_deg`` from the x axis towards port (or ``"trim"``: the skipper's angle
+    against the steady yaw moment); ``control``: how the skipper holds it
+    (:class:`boatland.loads.skipper.Skipper`: a constant push by default)."""
 
     force: float
     position: tuple[float, float, float]
     ramp: float
+    direction_deg: float | str = "trim"
+    control: Skipper = Skipper()
+
+    @property
+    def trimmed(self) -> bool:
+        """The push's direction is the skipper's trim against the steady yaw moment
+        (:meth:`boatland.landing.environment.Environment.of`), not a given angle."""
+        return self.direction_deg == "trim"
 
 
 @dataclass(frozen=True, kw_only=True, eq=False)
@@ -273,6 +285,8 @@ class Sea:
     shortest_period : float
         Period [s] above whose frequency only 1 % of the wave variance lies (the regular wave's T):
         the time step must resolve it (dt ≤ shortest_period / 20).
+    drift : str
+        The second-order wave drift applied: "none", "mean" or "newman" (:mod:`boatland.sea.drift`).
     """
 
     kind: str
@@ -280,6 +294,7 @@ class Sea:
     water_depth: float | None
     peak_period: float
     shortest_period: float
+    drift: str = "none"
 
     def model(self, db: HydroDB | None = None) -> SeaState | RegularWave | MeasuredRecord:
         """The wave model for a run with ``db``: its water depth (unless the file gave one) and g."""

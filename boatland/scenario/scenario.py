@@ -57,6 +57,8 @@ from typing import Any
 from boatland.errors import BoatlandWarning
 from boatland.scenario.parts import (Fender, Incidents, InitialState, Landing, Output, Radiation, Sea,
                                            Simulation, Thrust, VesselSetup)
+from boatland.loads.current import Current
+from boatland.loads.wind import Wind
 from boatland.scenario.schema import SCENARIO_SCHEMA, json_schema
 from boatland.tomlspec import Problems, SpecError, did_you_mean, parse_toml_file, validate
 
@@ -86,6 +88,10 @@ class Scenario:
         None: no thrust.
     sea : Sea or None
         None: calm water.
+    current : Current or None
+        A uniform current (:mod:`boatland.loads.current`); None: none.
+    wind : Wind or None
+        Wind with gusts (:mod:`boatland.loads.wind`); None: none.
     initial : InitialState
     incidents : Incidents
     output : Output
@@ -111,6 +117,8 @@ class Scenario:
     initial: InitialState
     incidents: Incidents
     output: Output
+    current: Current | None = None
+    wind: Wind | None = None
     source: str = "<dict>"
     base_dir: Path = field(default_factory=Path.cwd)
     document: Mapping[str, Any] = field(default_factory=dict, repr=False)
@@ -218,6 +226,7 @@ def scenario_from_dict(doc: Mapping[str, Any], *, source: str = "<dict>", base_d
     thrust = sec.thrust(ctx)
     vessel = sec.vessel(ctx, landing, fender, thrust, databases)
     sea = sec.sea(ctx, vessel.heading_deg if vessel is not None else 0.0)
+    current, wind = sec.flows(ctx, vessel.heading_deg if vessel is not None else 0.0)
     simulation = sec.simulation(ctx, sea, thrust)
     initial = sec.initial(ctx)
     problems.raise_if_any()
@@ -229,7 +238,7 @@ def scenario_from_dict(doc: Mapping[str, Any], *, source: str = "<dict>", base_d
     return Scenario(
         name=data.get("name", default_name), description=data.get("description", ""), simulation=simulation,
         vessel=vessel, radiation=Radiation(method=r["method"], memory=r["memory"], tail=r["tail"], taper=r["taper"]),
-        landing=landing, fender=fender, thrust=thrust, sea=sea, initial=initial,
+        landing=landing, fender=fender, thrust=thrust, sea=sea, initial=initial, current=current, wind=wind,
         incidents=Incidents.from_table(s),
         output=Output(file=o.get("file"), log=o.get("log"), decimate=o["decimate"]),
         source=source, base_dir=base, document=copy.deepcopy(dict(doc)), warnings=tuple(ctx.notes),

@@ -13,11 +13,14 @@ from __future__ import annotations
 from typing import Any
 
 from boatland.irf.impulse import TAILS, TAPERS
+from boatland.loads.current import CURRENT_TABLE
+from boatland.loads.skipper import SKIPPER_TABLE
+from boatland.loads.wind import WIND_TABLE
 from boatland.sea.spectra import SHAPES
 from boatland.tomlspec import Key, Table, TableList, Vector
 from boatland.tomlspec import json_schema as _json_schema
 
-__all__ = ["DT_MAX", "FENDER_PRESETS", "FENDER_PRESET_ALIASES", "FENDER_REQUIRED", "LANDING_COMPACT", "LANDING_COMPACT_OPTIONAL",
+__all__ = ["DRIFT_MODES", "DT_MAX", "FENDER_PRESETS", "FENDER_PRESET_ALIASES", "FENDER_REQUIRED", "LANDING_COMPACT", "LANDING_COMPACT_OPTIONAL",
            "SCENARIO_SCHEMA", "SHEAR_STIFFNESS_DEFAULT", "SHEAR_DAMPING_RATIO_DEFAULT",
            "SEA_KINDS", "SEA_KIND_KEYS", "SEA_PART_KINDS", "json_schema"]
 
@@ -85,13 +88,17 @@ def _spectrum_keys(part: bool) -> dict[str, Any]:
 
 #: The keys of a spectral part (one spectrum at [sea], or each [[sea.parts]]).
 _SPECTRUM_KEYS = tuple(_spectrum_keys(False))
-_SPECTRAL_SEA = ("n_components", "repeat_period", "band_tail", "amplitudes")
+_SPECTRAL_SEA = ("n_components", "repeat_period", "band_tail", "amplitudes", "drift")
+#: How the second-order wave drift loads the vessel (``sea.drift``): none, the mean only, or mean and slowly
+#: varying by Newman's approximation (boatland.sea.drift).
+DRIFT_MODES = ("none", "mean", "newman")
 #: For each ``sea.kind`` (``"parts"`` = a sum of ``[[sea.parts]]``, no kind): the keys allowed at
 #: ``[sea]``, the keys required, and the groups of which exactly one is required.
 SEA_KIND_KEYS: dict[str, dict[str, tuple]] = {
     **{k: {"allowed": ("kind", *_SPECTRUM_KEYS, *_SPECTRAL_SEA, "water_depth"), "required": ("Hs",),
            "one_of": (("Tp", "omega_p"), _DIRECTION)} for k in SEA_PART_KINDS},
-    "regular": {"allowed": ("kind", "H", "T", "phase_deg", *_DIRECTION, "water_depth"), "required": ("H", "T"),
+    "regular": {"allowed": ("kind", "H", "T", "phase_deg", *_DIRECTION, "water_depth", "drift"),
+                "required": ("H", "T"),
                 "one_of": (_DIRECTION,)},
     "measured": {"allowed": ("kind", "file", "column", "time_rtol", "gauge_position", "n_keep", "remove_mean",
                              *_DIRECTION, "water_depth"), "required": ("file",), "one_of": (_DIRECTION,)},
@@ -231,9 +238,16 @@ SCENARIO_SCHEMA = Table({
         doc="bow fender contact (absent: free floating); "
             "μ(v) = μ_k + (μ_s − μ_k) exp(−(|v|/v_ref)^δ) + k_v |v|"),
     "thrust": Table({
-        "force": Key(float, required=True, gt=0.0, doc="bollard push along the vessel's x axis [N]"),
+        "force": Key(float, required=True, gt=0.0, doc="bollard push [N] (the nominal push when a controller acts)"),
         "position": Vector(size=3, names=_XYZ, required=True, doc="propulsor position, body frame [m]"),
-        "ramp": Key(float, default=THRUST_RAMP_DEFAULT, ge=0.0, doc="ramp-in time [s]"),
+        "ramp": Key(float, default=THRUST_RAMP_DEFAULT, ge=0.0, doc="ramp-in time [s] (also of the current and "
+                                                                    "the wind)"),
+        "direction_deg": Key((float, str), default="trim", ge=-60.0, le=60.0, choices=("trim",),
+                             doc="direction of the push in the vessel's horizontal plane, from its x axis towards "
+                                 "port [deg], or \"trim\" (default): the angle whose side force balances the steady "
+                                 "yaw moment of current, wind and drift about the fender — the skipper steering the "
+                                 "jets to hold the bow (0 without them)"),
+        "control": SKIPPER_TABLE,
     }, optional=True, doc="propeller thrust pushing the fender on (absent: no thrust)"),
     "sea": Table({
         "kind": Key(str, choices=SEA_KINDS, doc=", ".join(f"'{k}' ({s.label})" for k, s in SHAPES.items())
@@ -261,7 +275,12 @@ SCENARIO_SCHEMA = Table({
                            doc="site water depth [m] or \"inf\"; default the database's"),
         "parts": TableList(_PART, min_size=1, doc="a sum of spectra (swell + wind sea), each with its own "
                                                   "direction"),
+        "drift": Key(str, choices=DRIFT_MODES, doc="second-order wave drift: 'none' (default), 'mean', or 'newman' "
+                                                   "(mean and slowly varying, Newman's approximation); needs the "
+                                                   "database's mean drift coefficients"),
     }, optional=True, json_extra=_sea_json_rules(), doc="waves (absent: calm water)"),
+    "current": CURRENT_TABLE,
+    "wind": WIND_TABLE,
     "initial": Table({
         "displacement": Vector(size=3, names=("surge", "sway", "heave"), default=(0.0,) * 3,
                                doc="initial translation [m]"),

@@ -52,15 +52,22 @@ class MotionArrays:
             "ft": np.zeros((n_steps + 1, nc, 2)), "needed": np.zeros((n_steps + 1, nc)),
             "available": np.zeros((n_steps + 1, nc)), "tpos": np.zeros((n_steps + 1, nc, 2)),
             "slide": np.zeros((n_steps + 1, nc, 2)), "work": np.zeros((n_steps + 1, nc)),
+            "thrust": np.zeros(n_steps + 1),
         }
 
-    def run(self, dt: float, n_steps: int, *, F_ext=None, thrust=None, r_p=(0.0, 0.0, 0.0), x0=None, v0=None,
+    def run(self, dt: float, n_steps: int, *, F_ext=None, thrust=None, r_p=(0.0, 0.0, 0.0),
+            push_direction=(1.0, 0.0, 0.0), skipper=None, current=None, current_ramp=None, x0=None, v0=None,
             Bv=None, Bq=None, contacts=None, v_tol: float = 1e-6, limit_trans: float = 1e3,
             limit_rot: float = 1.0, progress=None, out=None, gate=None):
-        """Integrate; returns a dict of arrays (t, x, v and, with contacts, mode, fn, ft, needed,
+        """Integrate; returns a dict of arrays (t, x, v, thrust and, with contacts, mode, fn, ft, needed,
         available, tpos, slide, work) plus ``status`` and ``message``.
 
-        ``F_ext`` (2 n_steps + 1, 6) and ``thrust`` (2 n_steps + 1,) are sampled at half steps;
+        ``F_ext`` (2 n_steps + 1, 6) and ``thrust`` (2 n_steps + 1,) are sampled at half steps; the push
+        acts at body point ``r_p`` along the body direction ``push_direction`` (unit); ``skipper``: the
+        controller's parameters (:meth:`boatland.loads.skipper.Skipper.kernel`; None: a constant push);
+        ``current``: (U (3,) the current's local-frame velocity, :class:`boatland.loads.drag.DragLoad`)
+        for the drag on the moving hull (None: no current), its speed times ``current_ramp`` (2 n_steps + 1,)
+        at the half steps (default 1);
         ``contacts`` is a :class:`boatland.contact.fender.Contacts` in the local frame (None: none). ``progress``, an int64 array of shape
         (1,), receives the number of steps completed while the kernel runs (it releases the GIL, so
         another thread can poll it for a progress bar). ``out``: preallocated output arrays from
@@ -93,12 +100,26 @@ class MotionArrays:
             out = self.allocate_outputs(n_steps, nc)
         elif out["x"].shape != (n_steps + 1, 6) or out["mode"].shape != (n_steps + 1, nc):
             raise ValueError(f"out arrays must be allocate_outputs({n_steps}, {nc})")
+        e_T = np.asarray(push_direction, dtype=float).reshape(3)
+        if abs(np.linalg.norm(e_T) - 1.0) > 1e-12:
+            raise ValueError(f"push_direction must be a unit vector, got {e_T}")
+        sk = np.zeros(9) if skipper is None else np.ascontiguousarray(skipper, dtype=float).reshape(9)
+        if current is None:
+            flow = (False, np.zeros(3), np.zeros((4, 2)), np.zeros(8), np.ones(1), np.zeros((0, 3)))
+        else:
+            U, load = current
+            tab, par = load.kernel()
+            ramp = np.ones(m) if current_ramp is None else np.ascontiguousarray(current_ramp, dtype=float)
+            if ramp.shape != (m,):
+                raise ValueError(f"current_ramp must be ({m},) for {n_steps} steps (half steps)")
+            flow = (True, np.asarray(U, dtype=float).reshape(3), tab, par, ramp, load.strips)
         status, last = run_cummins(
             float(dt), int(n_steps), self.Mt_inv, self.C, vec(Bv), vec(Bq), F_ext, thrust,
-            np.asarray(r_p, dtype=float), vec(x0), vec(v0), self.conv, self.Kh, self.pairs_i, self.pairs_j,
-            self.n_hist, self.ss_A, self.ss_B, self.ss_C, self.ss_seg, self.ss_rows, contacts, float(v_tol),
-            float(limit_trans), float(limit_rot), out["x"], out["v"], out["mode"], out["fn"], out["ft"],
-            out["needed"], out["available"], out["tpos"], out["slide"], out["work"], progress, gate)
+            np.asarray(r_p, dtype=float), e_T, sk, flow, vec(x0), vec(v0), self.conv, self.Kh, self.pairs_i,
+            self.pairs_j, self.n_hist, self.ss_A, self.ss_B, self.ss_C, self.ss_seg, self.ss_rows, contacts,
+            float(v_tol), float(limit_trans), float(limit_rot), out["x"], out["v"], out["mode"], out["fn"],
+            out["ft"], out["needed"], out["available"], out["tpos"], out["slide"], out["work"], out["thrust"],
+            progress, gate)
         out = {k: a[:last + 1] for k, a in out.items()}
         out["t"] = np.arange(last + 1) * dt
         out["status"], out["message"] = int(status), STATUS_MESSAGES[int(status)]

@@ -310,8 +310,9 @@ class Result(TrialSeries):
             name, unit = k.split(" [")
             motions.append(f"{name} {fmt_length(v) if unit == 'm]' else fmt_angle(v)}")
         lines.append("  max motions          " + ", ".join(motions))
+        width = max([21] + [len(n) + 1 for n in s["incidents"]])
         for name, t in s["incidents"].items():
-            lines.append(f"  incident {name:21s}" + ("no" if t is None else f"at t = {t:.2f} s"))
+            lines.append(f"  incident {name:{width}s}" + ("no" if t is None else f"at t = {t:.2f} s"))
         shown = self.merged_events(events)
         hidden = len(self.merged_events("all")) - len(shown)
         if events != "none":

@@ -26,6 +26,7 @@ from boatland.landing.setup import Setup
 from boatland.reproducible import pinned
 from boatland.scenario.inputs import trial_inputs
 from boatland.scenario.scenario import Scenario
+from boatland.sea.drift import drift_series
 from boatland.sea.pile import scattered_tables
 from boatland.trial.events import extract_events
 from boatland.trial.motion import MotionArrays, compile_motion
@@ -65,6 +66,14 @@ def thrust_series(scenario: Scenario, dt: float, n_steps: int) -> np.ndarray:
         k = int(np.searchsorted(t, ramp, side="left"))
         r[:k] = 0.5 * (1 - np.cos(np.pi * t[:k] / ramp))
     return T * r
+
+
+def load_ramp(scenario: Scenario, dt: float, n_steps: int) -> np.ndarray:
+    """Factor on the current's speed and the wind's force at the half steps: the push's ramp (they build up
+    with it, so that the fender is pressed on before they pull it sideways), or 1 without a push."""
+    if scenario.thrust is None:
+        return np.ones(2 * n_steps + 1)
+    return thrust_series(scenario, dt, n_steps) / scenario.thrust.force
 
 
 def wave_start(scenario: Scenario) -> float:
@@ -194,6 +203,7 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
     elif scenario.sea is None:
         raise BoatlandInputError(f"{scenario.source}: waves given for a scenario without a sea: its [sea] sets the "
                                  "ramp and the pile's scattered wave")
+    env = setup.environment
     if waves is None:
         F = np.zeros((2 * n + 1, 6))
     else:
@@ -202,12 +212,24 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
         r = wave_ramp(scenario, dt, n)
         k = int(np.flatnonzero(r != 1.0)[-1]) + 1 if np.any(r != 1.0) else 0   # rows after k: × 1 (unchanged)
         F[:k] *= r[:k, None]
+        if env.drift != "none":
+            F += drift_series(env.drift, db, waves.realise(scenario.simulation.seed, n * dt), dt=dt, n_steps=n,
+                              x0=x0g, y0=y0g, heading_deg=float(np.degrees(psi)), ramp=r)
+    if env.wind_load is not None:
+        F += env.wind.force_series(env.wind_load, env.heading_deg, scenario.simulation.seed, dt, n) \
+            * load_ramp(scenario, dt, n)[:, None]
     thrust = thrust_series(scenario, dt, n)
     Bv, Bq = setup.additional_damping()
     contacts = setup.contacts()
     r_p = scenario.thrust.position if scenario.thrust is not None else (0.0, 0.0, 0.0)
     kwargs = dict(F_ext=F, thrust=thrust, r_p=r_p, x0=scenario.initial.displacement, v0=scenario.initial.velocity,
                   Bv=np.diag(Bv), Bq=np.diag(Bq), contacts=contacts, limit_trans=LIMIT_TRANS, limit_rot=LIMIT_ROT)
+    if not env.calm:
+        kwargs.update(push_direction=env.push_direction, current=env.kernel_current(),
+                      skipper=None if env.skipper is None else env.skipper.kernel(scenario.thrust.force,
+                                                                                 scenario.thrust.ramp, dt))
+        if env.current is not None:     # the speed × √ramp: the drag grows with the push, their ratio fixed
+            kwargs["current_ramp"] = np.sqrt(load_ramp(scenario, dt, n))
     provenance = {
         "boatland": __version__, "scenario": scenario.name, "scenario_sha256": scenario.digest(),
         "database": db.name, "seed": scenario.simulation.seed, "dt": dt, "steps": n,
@@ -226,7 +248,7 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
     t = out["t"]
     k = len(t)
     provenance["wall_time"] = time.perf_counter() - wall0
-    result = Result(t=t, x=out["x"], v=out["v"], F_exc=F[0:2 * k:2], thrust=thrust[0:2 * k:2],
+    result = Result(t=t, x=out["x"], v=out["v"], F_exc=F[0:2 * k:2], thrust=out["thrust"],
                     mode=out["mode"], fn=out["fn"], ft=out["ft"], needed=out["needed"],
                     available=out["available"], tpos=out["tpos"], slide=out["slide"], work=out["work"],
                     status=out["status"], message=out["message"], provenance=provenance,
@@ -305,7 +327,7 @@ def _send(sinks, live: dict, F, thrust, dt: float, k0: int, k1: int) -> None:
     views = {k: a[k0:k1] for k, a in live.items() if k in _BLOCK_SERIES}
     for a in views.values():
         a.flags.writeable = False
-    blk = StepBlock(k0=k0, k1=k1, t=t[k0 - lo:], F_exc=F[2 * k0:2 * k1:2], thrust=thrust[2 * k0:2 * k1:2],
+    blk = StepBlock(k0=k0, k1=k1, t=t[k0 - lo:], F_exc=F[2 * k0:2 * k1:2], thrust=live["thrust"][k0:k1],
                     events=events, **views)
     for sink in sinks:
         sink.steps(blk)
