@@ -30,7 +30,7 @@ __all__ = ["all_cases", "Case", "CaseResult", "Check", "Context", "Outcome", "ru
 
 def all_cases() -> list[Case]:
     """Every case, in report order (cheap and analytic first, Monte Carlo last)."""
-    from boatland.validation import campaigns, contact, field, hemisphere, hinge, tank, timedomain
+    from boatland.validation import campaigns, contact, field, hemisphere, hinge, loads, tank, timedomain
 
     return [*hemisphere.CASES, *timedomain.CASES, *contact.CASES, *hinge.CASES, *tank.CASES, *campaigns.CASES,
-            *field.CASES]
+            *field.CASES, *loads.CASES]

@@ -145,7 +145,7 @@ def _default():
     return path, scenario, db
 
 
-def _printer(ctx: Context, what: str):
+def campaign_printer(ctx: Context, what: str):
     marks = set()
 
     def progress(done, total):
@@ -188,7 +188,7 @@ def run_trends(ctx: Context) -> Outcome:
     f = write_campaign(ctx.work / "heading.toml", "heading", path,
                        axes={"sea.Hs": [hs], "sea.Tp": [TRENDS_TP], "sea.relative_direction_deg": list(HEADINGS)},
                        **common)
-    c, t, _ = run_study(f, ctx.work / "heading.h5", workers=ctx.workers, progress=_printer(ctx, "headings"))
+    c, t, _ = run_study(f, ctx.work / "heading.h5", workers=ctx.workers, progress=campaign_printer(ctx, "headings"))
     p_h = {k[2]: v for k, v in p_incident(c, t, "first slip").items()}
     m_h = {k[2]: v for k, v in mean_first_time(c, t, "first slip", access).items()}
     for d in (135.0, 90.0):
@@ -202,7 +202,7 @@ def run_trends(ctx: Context) -> Outcome:
         f = write_campaign(ctx.work / "period.toml", "period", path,
                            axes={"sea.Hs": [hs], "sea.Tp": list(PERIODS), "sea.relative_direction_deg": [180.0]},
                            **common)
-        c, t, st = run_study(f, ctx.work / "period.h5", workers=ctx.workers, progress=_printer(ctx, "periods"))
+        c, t, st = run_study(f, ctx.work / "period.h5", workers=ctx.workers, progress=campaign_printer(ctx, "periods"))
         m_p = {k[1]: v for k, v in mean_first_time(c, t, "first slip", access).items()}
         p_p = {k[1]: v for k, v in p_incident(c, t, "first slip").items()}
         mle = {case.values["sea.Tp"]: float(st[case.index]["first slip: mean time"]) for case in c.cases}
@@ -223,7 +223,7 @@ def run_trends(ctx: Context) -> Outcome:
         f = write_campaign(ctx.work / "hs_thrust.toml", "hs_thrust", path,
                            axes={"sea.Hs": hs_values, "sea.Tp": [TRENDS_TP], "thrust.force": [thrust, 2 * thrust]},
                            **{**common, "seeds": 6})
-        c, t, _ = run_study(f, ctx.work / "hs_thrust.h5", workers=ctx.workers, progress=_printer(ctx, "H_s × thrust"))
+        c, t, _ = run_study(f, ctx.work / "hs_thrust.h5", workers=ctx.workers, progress=campaign_printer(ctx, "H_s × thrust"))
         p = {(k[0], k[2]): v for k, v in p_incident(c, t, "slip > 0.1 m").items()}
         rises = all([p[(h, T)] for h in hs_values] == sorted(p[(h, T)] for h in hs_values)
                     and p[(hs_values[-1], T)] > p[(hs_values[0], T)] for T in (thrust, 2 * thrust))
@@ -291,14 +291,16 @@ FD_TD_ACCESS = 1800.0
 FD_TD_TP = 7.0
 
 
-def fd_vs_td_campaign(folder: Path, heading: float, hs, *, seeds: int = 24, scenario: Path | None = None) -> Path:
+def fd_vs_td_campaign(folder: Path, heading: float, hs, *, seeds: int = 24, scenario: Path | None = None,
+                      set_: dict | None = None, name: str = "fd_vs_td") -> Path:
     """The campaign of the screening-vs-Monte-Carlo comparison: the default scenario at Tp 7 s and relative
-    heading ``heading``, H_s over ``hs``, ``seeds`` trials per case of 30 min, master seed 2026."""
+    heading ``heading``, H_s over ``hs``, ``seeds`` trials per case of 30 min, master seed 2026; ``set_``: more
+    keys set on every case (a current, a wind)."""
     if scenario is None:
         scenario = validation_scenario_path()
-    return write_campaign(Path(folder) / f"fd_vs_td_{heading:g}.toml", f"fd_vs_td_{heading:g}", scenario,
+    return write_campaign(Path(folder) / f"{name}_{heading:g}.toml", f"{name}_{heading:g}", scenario,
                           seeds=seeds, master_seed=2026, duration=FD_TD_ACCESS,
-                          set_={"sea.Tp": FD_TD_TP, "sea.relative_direction_deg": float(heading)},
+                          set_={"sea.Tp": FD_TD_TP, "sea.relative_direction_deg": float(heading), **(set_ or {})},
                           axes={"sea.Hs": [float(h) for h in hs]})
 
 
@@ -318,7 +320,7 @@ def run_fd_vs_td(ctx: Context) -> Outcome:
         hs = sorted({hs_at_probability(scenario, db, p, access=FD_TD_ACCESS, Tp=FD_TD_TP, heading=d) for p in targets})
         f = fd_vs_td_campaign(ctx.work, d, hs, seeds=seeds, scenario=path)
         _, _, stats = run_study(f, ctx.work / f"fd_vs_td_{d:g}.h5", workers=ctx.workers,
-                                progress=_printer(ctx, f"screening vs Monte Carlo, {d:g}°"))
+                                progress=campaign_printer(ctx, f"screening vs Monte Carlo, {d:g}°"))
         for h, row in zip(hs, stats):
             p, lo, hi = row["first slip: P"], row["first slip: P lo"], row["first slip: P hi"]
             fd = float(row["screening: P(slip)"])
