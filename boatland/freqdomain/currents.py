@@ -67,10 +67,19 @@ class CurrentSweep:
             b, w = int(np.argmax(h)), int(np.argmin(h))
             calm = self.Hs[np.argmin(self.speeds)] if self.speeds.min() == 0 else None
             ref = f" (no current: {calm[b]:.2f} m)" if calm is not None else ""
-            out.append(f"{u:g} m/s: land with the current {side_words(self.directions_deg[b])} "
-                       f"({self.directions_deg[b]:g}°): limit {self.Hs[i, b]:.2f} m{ref}; worst "
-                       f"{side_words(self.directions_deg[w])} ({self.directions_deg[w]:g}°): {self.Hs[i, w]:.2f} m")
+            out.append(f"{u:g} m/s: land with the current {self._where(i, b)}: limit {self.Hs[i, b]:.2f} m{ref}; "
+                       f"worst {self._where(i, w)}: {self.Hs[i, w]:.2f} m")
         return out
+
+    def _where(self, i: int, j: int) -> str:
+        """The direction in words, "either side" when its port–starboard mirror is as good (within 0.1 %)."""
+        d = float(self.directions_deg[j])
+        mirror = np.flatnonzero(np.isclose(self.directions_deg, (360.0 - d) % 360.0))
+        words = f"{side_words(d)} ({d:g}°)"
+        if mirror.size and int(mirror[0]) != j and np.isclose(self.Hs[i, mirror[0]], self.Hs[i, j], rtol=1e-3):
+            words = words.replace(" from starboard", "").replace(" from port", "") + f" or {(360.0 - d) % 360.0:g}° " \
+                                                                                         "(either side)"
+        return words
 
     def as_dict(self) -> dict:
         fin = lambda a: [[None if not np.isfinite(v) else float(v) for v in row] for row in a]  # noqa: E731

@@ -46,6 +46,23 @@ def test_a_beam_current_loads_the_fender_by_the_drag_formula(default_landing):
     assert r.mode[-1].tolist() == [1, 1]
 
 
+def test_without_the_trim_a_beam_current_turns_the_vessel_about_its_bow(default_landing):
+    # two tubes 1.5 m apart hold 150 kN × 0.75 m = 112 kN m of yaw moment; the current's lateral force acts
+    # 15.2 m aft of the fender: 7.4 kN, a 0.45 m/s beam current, is all they can hold with the push straight ahead
+    scenario, db = default_landing
+    out = {}
+    for U in (0.4, 0.5):
+        sc = scenario.replace({"sea": None, "simulation.duration": 200.0, "thrust.direction_deg": 0.0,
+                               "current": {"speed": U, "relative_direction_deg": 90.0}})
+        r = simulate(sc, db)
+        out[U] = r
+        print(f"{U} m/s, push straight ahead: normal forces {r.fn[-1, 0] / 1e3:.0f} / {r.fn[-1, 1] / 1e3:.0f} kN, "
+              f"yaw {math.degrees(r.x[-1, 5]):.1f}°")
+    assert (out[0.4].mode[out[0.4].t > 20] == 2).any() and out[0.4].fn[-1].max() > 125e3
+    assert math.degrees(out[0.4].x[-1, 5]) < -3.0
+    assert out[0.5].fn[-1].min() == 0.0 and math.degrees(out[0.5].x[-1, 5]) < -10.0
+
+
 def test_the_trim_balances_the_yaw_moment_by_hand(default_landing):
     scenario, db = default_landing
     sc = scenario.replace({"current.speed": 1.0, "current.relative_direction_deg": 90.0})
