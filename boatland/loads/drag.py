@@ -349,7 +349,7 @@ def drag_keys(what: str, defaults: dict) -> dict:
     return {
         "area_x": Key(float, gt=0.0, doc=f"frontal projected area A_x of the {what}'s load [m²] (default: measured "
                                          "on the vessel's mesh)"),
-        "area_y": Key(float, gt=0.0, doc=f"lateral projected area A_y [m²] (default: measured on the vessel's mesh)"),
+        "area_y": Key(float, gt=0.0, doc="lateral projected area A_y [m²] (default: measured on the vessel's mesh)"),
         "length": Key(float, gt=0.0, doc="reference length L of the yaw coefficient [m] (default: the mesh's length)"),
         "centroid": Vector(size=3, names=("x", "y", "z"), doc="where the forces act, body frame [m] (default: the "
                                                               "centroid of the lateral area)"),

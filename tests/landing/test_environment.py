@@ -86,7 +86,6 @@ def test_the_landed_equilibrium_is_the_linear_solve(default_landing, changes):
     # time domain settled under steady loads (no waves) against the frequency domain's static solve
     scenario, db = default_landing
     sc = scenario.replace({"sea": None, "simulation.duration": 200.0, **changes})
-    setup = Setup.of(sc, db)
     r = simulate(sc, db)
     land = LandingSetup.from_scenario(sc.replace({"sea": scenario.document["sea"]}), db)
     h = landed_response(db, land, np.array([0.5]), np.array([180.0]))
