@@ -5,7 +5,7 @@ from __future__ import annotations
 import hashlib
 
 NOT_DATA = {"README.md", "SHA256SUMS", ".gitattributes", "LICENSE.WEC-Sim", "COPYRIGHT.WEC-Sim",
-            "LICENSE.HydroChrono"}
+            "LICENSE.HydroChrono", "LICENSE.MSS"}
 
 
 def listed(refdata):
@@ -18,7 +18,7 @@ def test_every_data_file_is_listed_and_nothing_else(refdata):
     on_disk = {p.relative_to(refdata).as_posix() for p in refdata.rglob("*")
                if p.is_file() and p.name not in NOT_DATA and "__pycache__" not in p.parts}
     assert on_disk == set(listed(refdata))
-    assert len(on_disk) == 16
+    assert len(on_disk) == 20
 
 
 def test_files_are_unchanged(refdata):
@@ -32,5 +32,5 @@ def test_readme_names_every_folder_and_licence(refdata):
     readme = (refdata / "README.md").read_text()
     for folder in {name.split("/")[0] for name in listed(refdata)}:
         assert f"`{folder}" in readme, folder
-    for notice in ("LICENSE.WEC-Sim", "COPYRIGHT.WEC-Sim", "LICENSE.HydroChrono"):
+    for notice in ("LICENSE.WEC-Sim", "COPYRIGHT.WEC-Sim", "LICENSE.HydroChrono", "LICENSE.MSS"):
         assert (refdata / notice).is_file() and notice in readme

@@ -45,7 +45,7 @@ def check(scenario, db, *, memory=False, setup: Setup | None = None) -> Scenario
     setup = Setup.of(scenario, db, setup)
     found = check_against(setup)
     problems = found.problems + tuple(p for p in scenario_problems(scenario, db) if p not in found.problems)
-    warnings, notes = found.warnings, found.notes
+    warnings, notes = found.warnings, found.notes + tuple(setup.environment.lines(scenario))
     if memory is not False and not problems and db.M is not None:
         mem = setup.memory() if memory is True else memory() if callable(memory) else memory
         mc = check_memory(setup, mem)

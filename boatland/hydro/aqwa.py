@@ -15,11 +15,22 @@ with ``*`` are comments (run date, and the frequencies of the low/high-frequency
     DAMPING        body body ifreq  6 × 6
     ADDEDMASS_LF / DAMPING_LF / ADDEDMASS_HF   body body  6 × 6
     FORCERAO       body idir ifreq  6 amplitudes, then 6 phases [deg] on the next line
-    FARFIELD ...                                    (drift; ignored)
+    FARFIELD       body idir ifreq  Fx Fy Fz Mx My Mz   far-field (momentum) mean drift [N/m², N·m/m²];
+                                                    AQWA fills surge, sway and yaw only
 
 The column layout changed after AQWA 18.2 (a body number in front of GENERAL, directions on the
 first line or on the next), so everything is read as a stream of tokens per keyword block, never by
 column position.
+
+Mean drift. The ``.LIS`` lists the mean wave drift per unit amplitude squared ("WAVE-DRIFT LOADS FOR UNIT
+WAVE AMPLITUDE**2", "(WITH RESPECT TO STRUCTURE COG)"): one table per DOF (``SURGE(X)`` … ``YAW(RZ)``),
+the row "DUE TO ... DRIFT", columns of directions, rows of frequencies [rad/s, 3 decimals], values in
+N/m² and N·m/m² with 3 significant digits. When it gives heave, roll and pitch too, it is the near-field
+(pressure integration) drift of a run with the QTF options (AQTF, CQTF); the ``.AH1`` FARFIELD block is
+AQWA's far-field (momentum) drift, surge, sway and yaw, 5 digits. ``drift="auto"`` (default) reads the
+``.LIS`` tables when the ``.LIS`` is beside the ``.AH1`` and has them, else the FARFIELD block;
+``"pressure"`` / ``"momentum"`` only the one; ``"none"`` neither. Directions and signs as the excitation:
+direction of travel, force along the global axes, moments about the COG.
 
 Conventions: AQWA reports A, B, C, X about the centre of gravity, so the reference point is the COG.
 Wave directions are directions of travel like boatland's; −180° and 180° are merged and all are
@@ -47,15 +58,23 @@ _KNOWN = _REQUIRED + ("COG", "COB", "DRAFT", "DISPLACEMENT", "MASS", "ADDEDMASS_
                       "ADDEDMASS_HF", "FIDD", "FARFIELD")
 
 
-def read_aqwa(path: str | Path) -> HydroDB:
+#: ``drift=`` choices (module docstring).
+DRIFT_CHOICES = ("auto", "pressure", "momentum", "none")
+_DRIFT_DOFS = ("SURGE(X)", "SWAY(Y)", "HEAVE(Z)", "ROLL(RX)", "PITCH(RY)", "YAW(RZ)")
+
+
+def read_aqwa(path: str | Path, drift: str = "auto") -> HydroDB:
     """Read an AQWA ``.AH1`` file (single body) into a :class:`HydroDB`.
 
     Parameters
     ----------
     path : str or Path
         The ``.AH1`` file, or the ``.LIS`` beside it. The ``.LIS`` is optional and used only for what
-        the ``.AH1`` lacks (the mass and inertia when there is no MASS block) and to check the unit
-        system is kg, m.
+        the ``.AH1`` lacks (the mass and inertia when there is no MASS block), to check the unit
+        system is kg, m, and for its mean drift tables.
+    drift : {"auto", "pressure", "momentum", "none"}
+        Which mean drift fills ``HydroDB.drift`` (module docstring): the ``.LIS`` tables, the ``.AH1``
+        FARFIELD block, the first of these present (``"auto"``), or none. A provenance note says which.
 
     Returns
     -------
@@ -70,6 +89,8 @@ def read_aqwa(path: str | Path) -> HydroDB:
         Missing or malformed file; the message names the file and the line.
     """
     path = Path(path)
+    if drift not in DRIFT_CHOICES:
+        raise HydroDataError(path, "drift", f"unknown choice {drift!r}; expected one of {', '.join(DRIFT_CHOICES)}")
     if path.suffix.lower() not in (".ah1", ".lis"):
         raise HydroDataError(path, None, "not an AQWA file; expected the .AH1 (or the .LIS beside it)")
     ah1 = path if path.suffix.lower() == ".ah1" else find_sibling(path, ".AH1")
@@ -121,6 +142,7 @@ def read_aqwa(path: str | Path) -> HydroDB:
     if "FIDD" in blocks and np.any(_floats_lenient(blocks["FIDD"])[1:] != 0):
         notes.append("FIDD block has non-zero values: not included in B")
 
+    D = _mean_drift(drift, blocks, lis, beta_in, omega, ndir, nf, notes)
     order = np.argsort(omega)
     if np.any(order != np.arange(nf)):
         notes.append("frequencies sorted ascending")
@@ -131,16 +153,22 @@ def read_aqwa(path: str | Path) -> HydroDB:
             diff = np.max(np.abs(X[:, grp] - X[:, grp[:1]])) / max(np.max(np.abs(X[:, grp[:1]])), 1e-30)
             notes.append(f"directions {', '.join(f'{beta_in[i]:g}°' for i in grp)} are the same: kept "
                          f"{beta_in[grp[0]]:g}° (max difference {diff:.2g} of the largest force)")
+            if D is not None:
+                diff = np.max(np.abs(D[:, grp] - D[:, grp[:1]])) / max(np.max(np.abs(D[:, grp[:1]])), 1e-30)
+                notes.append(f"mean drift at {', '.join(f'{beta_in[i]:g}°' for i in grp)}: kept {beta_in[grp[0]]:g}° "
+                             f"(max difference {diff:.2g} of the largest)")
     if not np.allclose(beta, beta_in[keep]):
         notes.append("wave directions mapped to [0°, 360°) and sorted")
     X = X[:, keep]
+    if D is not None:
+        D = D[:, keep][..., order]
 
     prov = Provenance(source=str(path), solver="AQWA", created=_created(comments), reader="aqwa",
                       notes=tuple(notes))
     return build_db(
         ah1, omega=omega, A=A, B=B, X=X, wave_dir_deg=beta, C=C, A_inf=A_inf, A_0=A_0, M=M,
         ref_point=cog, cog=cog, cob=cob, disp_vol=vol, water_depth=depth, rho=rho, g=g,
-        name=ah1.stem, provenance=prov,
+        name=ah1.stem, provenance=prov, drift=D,
     )
 
 
@@ -290,6 +318,118 @@ def _excitation(block: _Block, ndir: int, nf: int) -> np.ndarray:
         X[:, d, k] = amp * np.exp(-1j * np.deg2rad(phase))
     block.done(f"{ndir} directions × {nf} frequencies")
     return X
+
+
+def _mean_drift(choice: str, blocks: dict, lis: TextFile | None, beta_in: np.ndarray, omega: np.ndarray,
+                ndir: int, nf: int, notes: list[str]) -> np.ndarray | None:
+    """Mean drift (6, ndir, nf) in the file's direction and frequency order, from the .LIS tables or the
+    FARFIELD block as ``choice`` says (module docstring); None when neither is there or asked for."""
+    if choice in ("auto", "pressure") and lis is not None:
+        D = _lis_drift(lis, beta_in, omega)
+        if D is not None:
+            near = np.any(D[2:5] != 0)
+            notes.append(f"mean drift: the wave-drift tables of {lis.path.name} ("
+                         + ("near-field pressure integration: all six DOFs" if near else
+                            "surge, sway and yaw only; heave, roll, pitch 0")
+                         + "), 3 significant digits, moments about the COG")
+            return D
+    if choice in ("auto", "momentum") and "FARFIELD" in blocks:
+        D = _farfield(blocks["FARFIELD"], ndir, nf)
+        notes.append("mean drift: the FARFIELD block of the .AH1 (AQWA's far-field momentum method): surge, sway "
+                     "and yaw only — heave, roll and pitch drift 0 (not computed), moments about the COG")
+        return D
+    if choice == "pressure":
+        notes.append("mean drift: none read (no wave-drift tables in a .LIS beside the .AH1)")
+    return None
+
+
+def _farfield(block: _Block, ndir: int, nf: int) -> np.ndarray:
+    """FARFIELD → (6, ndir, nf): per (direction, frequency) index Fx Fy Fz Mx My Mz."""
+    D = np.zeros((6, ndir, nf))
+    seen = np.zeros((ndir, nf), dtype=bool)
+    for _ in range(ndir * nf):
+        block.integer("the body number", lo=1, hi=1)
+        line = block.items[min(block.pos, len(block.items) - 1)][1]
+        d = block.integer("the direction index", lo=1, hi=ndir) - 1
+        k = block.integer("the frequency index", lo=1, hi=nf) - 1
+        if seen[d, k]:
+            raise block.error(f"direction {d + 1}, frequency {k + 1} appears twice", at=line)
+        seen[d, k] = True
+        D[:, d, k] = block.floats(6, "6 mean drift forces and moments")
+    block.done(f"{ndir} directions × {nf} frequencies")
+    return D
+
+
+def _lis_drift(lis: TextFile, beta_in: np.ndarray, omega: np.ndarray) -> np.ndarray | None:
+    """The .LIS wave-drift tables of structure 1 → (6, ndir, nf) at the .AH1's directions and frequencies;
+    None when the listing has none."""
+    lines = lis.lines
+    D = np.full((6, beta_in.size, omega.size), np.nan)
+    found = False
+    n = 0
+    while n < len(lines):
+        if "W A V E - D R I F T" not in lines[n]:
+            n += 1
+            continue
+        head = n
+        n += 1
+        dirs = None
+        while n < len(lines) and dirs is None:
+            if "DUE TO" in lines[n] and "RADIANS/SEC" in lines[n]:
+                tokens = lines[n].split("(RADIANS/SEC)", 1)[1].split()
+                dirs = lis.numbers(n + 1, tokens, what="wave directions [deg]")
+            n += 1
+        while n < len(lines) and _rule(lines[n]):
+            n += 1
+        if n >= len(lines) or lines[n].strip() != "DRIFT":
+            continue                                   # forces due to something else (none in the files seen)
+        n += 1
+        while n < len(lines) and _rule(lines[n]):
+            n += 1
+        label = lines[n].strip() if n < len(lines) else ""
+        if label not in _DRIFT_DOFS:
+            raise lis.error(n + 1, f"wave-drift table (line {head + 1}): expected one of {', '.join(_DRIFT_DOFS)}, "
+                                   f"found {label!r:.30}")
+        i = _DRIFT_DOFS.index(label)
+        cols = []
+        for b in dirs:
+            match = np.flatnonzero(np.abs(beta_in - b) <= 0.05)
+            if match.size != 1:
+                raise lis.error(n + 1, f"wave-drift table: direction {b:g}° is not one of the .AH1's "
+                                       f"({', '.join(f'{x:g}' for x in beta_in)}°)")
+            cols.append(int(match[0]))
+        n += 1
+        while n < len(lines):
+            tokens = lines[n].split()
+            if len(tokens) != 1 + len(dirs) or not _looks_numeric(tokens):
+                break
+            vals = lis.numbers(n + 1, tokens, what="a frequency and mean drift values")
+            k = np.flatnonzero(np.abs(omega - vals[0]) <= 5.001e-4)
+            if k.size != 1:
+                raise lis.error(n + 1, f"wave-drift table: frequency {vals[0]:g} rad/s is not one of the .AH1's")
+            D[i, cols, k[0]] = vals[1:]
+            found = True
+            n += 1
+    if not found:
+        return None
+    if np.any(np.isnan(D)):
+        i, b, k = np.argwhere(np.isnan(D))[0]
+        raise lis.error(None, f"wave-drift tables: no {_DRIFT_DOFS[i]} value at {beta_in[b]:g}°, "
+                              f"{omega[k]:.4g} rad/s (truncated listing?)")
+    return D
+
+
+def _rule(line: str) -> bool:
+    """A blank line or a line of dashes (table rules)."""
+    return set(line.strip()) <= {"-", " "}
+
+
+def _looks_numeric(tokens: list[str]) -> bool:
+    try:
+        [float(t) for t in tokens]
+    except ValueError:
+        return False
+    return True
 
 
 def _floats_lenient(block: _Block) -> np.ndarray:

@@ -15,7 +15,15 @@ boatland's extras live under ``/body1/boatland/`` where other readers ignore the
 - ``mesh/{vertices, faces}``: wetted hull panels;
 - ``topsides/{vertices, faces}``: the hull above the waterline (topsides, deck, deckhouse), drawn by
   the viewers only;
+- ``drift`` (6, Nh, Nf): the mean wave drift force and moment per unit amplitude squared
+  [N/m², N·m/m²] (:mod:`boatland.hydro.drift`), when the database has it; absent: None;
 - attributes ``name``, ``provenance_*``.
+
+Mean drift from other tools is read from WEC-Sim's groups ``/body1/hydro_coeffs/mean_drift/<method>/val``
+(6, Nh, Nf), normalised by ρg like the excitation (WEC-Sim ``writeBEMIOH5.m``, ``readBEMIOH5.m``), the
+method being ``momentum_conservation``, ``control_surface`` or ``pressure_integration``; the first present
+in that order is used (a note says which). boatland writes its drift only under its own extras: the
+database does not record the method as data, so it cannot name WEC-Sim's group for it.
 
 Other groups present in a file (IRFs, state-space fits) are left for :mod:`boatland.irf` to read and
 write; rewriting a database with :func:`write_bemio` keeps nothing else.
@@ -34,7 +42,7 @@ from boatland.atomic import atomic_path
 from boatland.errors import HydroDataError
 from boatland.vessel.database import HullMesh, HydroDB, Provenance
 
-__all__ = ["read_bemio", "write_bemio", "is_bemio", "write_radiation", "read_radiation"]
+__all__ = ["read_bemio", "write_bemio", "is_bemio", "write_drift", "write_radiation", "read_radiation"]
 
 _HC = "body1/hydro_coeffs"
 _EXTRA = "body1/boatland"
@@ -120,6 +128,8 @@ def write_bemio(db: HydroDB, path: str | Path) -> Path:
             if db.topsides is not None:
                 _store(ex, "topsides/vertices", db.topsides.vertices)
                 _store(ex, "topsides/faces", db.topsides.faces)
+            if db.drift is not None:
+                _store(ex, "drift", db.drift)
     return path
 
 
@@ -212,6 +222,11 @@ def read_bemio(path: str | Path) -> HydroDB:
                 notes.append("boatland's exact copy disagrees with the BEMIO arrays (edited by another tool?): "
                              "used the BEMIO arrays")
 
+        drift = _drift(num, f, path, rho, g, notes)
+        if drift is not None and drift.shape != (6, nb, nf):
+            where = f"/{_EXTRA}/drift" if f"{_EXTRA}/drift" in f else f"/{_HC}/mean_drift"
+            raise HydroDataError(path, where, f"expected shape {(6, nb, nf)} (from {nf} frequencies and {nb} "
+                                              f"directions), got {drift.shape}")
         M = num(f"{_EXTRA}/mass_matrix", required=False)
         A0 = num(f"{_EXTRA}/A0", required=False)
         ref = num(f"{_EXTRA}/ref_point", required=False)
@@ -244,10 +259,31 @@ def read_bemio(path: str | Path) -> HydroDB:
             cob=np.zeros(3) if cb is None else cb.reshape(-1),
             disp_vol=0.0 if vol is None else float(vol.reshape(-1)[0]),
             water_depth=water_depth, rho=rho, g=g, name=str(name), provenance=prov, mesh=mesh,
-            topsides=topsides,
+            topsides=topsides, drift=drift,
         )
     except HydroDataError as exc:
         raise HydroDataError(path, exc.where, exc.message) from None
+
+
+#: WEC-Sim's mean-drift groups, in the order they are preferred, and what each method gives.
+_MEAN_DRIFT = (("momentum_conservation", "far-field momentum conservation"),
+               ("control_surface", "control-surface integration"),
+               ("pressure_integration", "near-field pressure integration"))
+
+
+def _drift(num, f, path, rho: float, g: float, notes: list[str]):
+    """The mean drift of the file (dimensional), boatland's own copy first, else WEC-Sim's groups; or None."""
+    if f"{_EXTRA}/drift" in f:
+        return num(f"{_EXTRA}/drift")
+    for key, what in _MEAN_DRIFT:
+        name = f"{_HC}/mean_drift/{key}/val"
+        if name in f:
+            others = [k for k, _ in _MEAN_DRIFT if k != key and f"{_HC}/mean_drift/{k}/val" in f]
+            notes.append(f"mean drift: read from /{name} ({what}, stored by BEMIO as drift/(ρg)); which DOFs are "
+                         "meaningful depends on the method (momentum conservation gives surge, sway and yaw only)"
+                         + (f"; also in the file, not used: {', '.join(others)}" if others else ""))
+            return num(name) * rho * g
+    return None
 
 
 def _text(v) -> str:
@@ -272,6 +308,39 @@ def _depth(raw, path) -> float:
                                  f"expected a depth in m or 'infinite', got {text!r}") from None
     d = float(np.asarray(raw, dtype=float).reshape(-1)[0])
     return np.inf if d <= 0 else d
+
+
+def write_drift(path: str | Path, db: HydroDB) -> Path:
+    """Store ``db``'s mean drift and provenance notes in the existing database file ``path``, atomically,
+    leaving every other dataset as it is (for adding drift to a shipped database without rewriting it).
+
+    Raises
+    ------
+    HydroDataError
+        ``db`` has no drift, or the file holds another grid of frequencies or directions.
+    """
+    import shutil
+
+    import h5py
+
+    path = Path(path)
+    if db.drift is None:
+        raise HydroDataError(path, "drift", "the database has no mean drift to store")
+    with atomic_path(path) as tmp:
+        shutil.copyfile(path, tmp)
+        with h5py.File(tmp, "r+") as f:
+            w = np.asarray(f["simulation_parameters/w"][()], dtype=float).reshape(-1)
+            beta = np.asarray(f["simulation_parameters/wave_dir"][()], dtype=float).reshape(-1)
+            if w.shape != db.omega.shape or not np.allclose(w, db.omega, rtol=1e-12, atol=0) \
+                    or beta.shape != db.wave_dir_deg.shape or not np.allclose(beta, db.wave_dir_deg, rtol=0, atol=1e-9):
+                raise HydroDataError(path, "/simulation_parameters", "the file's frequencies or directions are not "
+                                                                     "the database's: write the whole database instead")
+            ex = f.require_group(_EXTRA)
+            if "drift" in ex:
+                del ex["drift"]
+            _compressed_store(f)(ex, "drift", db.drift)
+            ex.attrs["provenance_notes"] = json.dumps(list(db.provenance.notes))
+    return path
 
 
 # ------------------------------------------------------------------------- radiation memory

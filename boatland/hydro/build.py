@@ -37,6 +37,9 @@ Numerics, chosen deliberately
   (A_inf is then estimated downstream from Ogilvie's relation).
 - **Directions**: 0..180° are solved; 195..345° follow from port/starboard symmetry,
   :math:`X_i(-\beta) = s_i X_i(\beta)` with :data:`boatland.conventions.PORT_STARBOARD_SIGN`.
+- **Mean drift** (``drift=True``, the default): the far-field (Maruo–Newman) surge, sway and yaw drift of
+  the free-floating vessel from the Kochin functions of the same solves (:mod:`boatland.hydro.drift`),
+  0..180° and mirrored like X; heave, roll and pitch drift are 0 (not computed).
 - **Conventions**: Capytaine's complex amplitudes are exp(−iωt); excitation forces
   (Froude–Krylov + diffraction) are conjugated to boatland's exp(+iωt)
   (:mod:`boatland.conventions`). Capytaine's incident wave is referred to the origin = the
@@ -62,12 +65,14 @@ from typing import Iterator
 import numpy as np
 
 from boatland.conventions import PORT_STARBOARD_SIGN, mirror_direction_deg
+from boatland.hydro.drift import drift_from_results, far_field_note, imbalance_text
 from boatland.vessel.ctv_hull import CTVCatamaran
 from boatland.vessel.wigley import WigleyCatamaran
 from boatland.vessel.database import HydroDB, Provenance
 from boatland.vessel.files import VesselSpec, load_vessel
 
-__all__ = ["build_database", "build_from_file", "capytaine_body", "lid_depth", "mirror_directions", "SOLVER"]
+__all__ = ["build_database", "build_from_file", "capytaine_body", "drift_body", "lid_depth", "mirror_directions",
+           "SOLVER"]
 
 #: Capytaine's DOF names in boatland's DOF order (conventions.DOF_NAMES).
 CPT_DOFS = ("Surge", "Sway", "Heave", "Roll", "Pitch", "Yaw")
@@ -194,10 +199,32 @@ def capytaine_body(spec: VesselSpec):
     return body, counts, z_lid
 
 
+def drift_body(spec: VesselSpec):
+    """The body :func:`boatland.hydro.drift.add_drift` solves for ``spec``'s mean drift: the builder's
+    symmetric hull mesh (:func:`capytaine_body`) with Capytaine's own lid generator at the builder's lid
+    height instead of the builder's lid.
+
+    Capytaine's generator keeps only the lid panels that lie wholly inside the waterline (about 85 % of the
+    waterplane), a margin to the hull; the builder's lid covers the whole waterplane and touches the hull,
+    and the far field of that solution does not conserve energy: the optical theorem fails by 7–50 % of
+    the scattered energy for ctv27 at 1.2–3 rad/s (head seas), where the hull without a lid, or with
+    Capytaine's lid, balances to 0.1–3 % (:attr:`boatland.hydro.drift.FarFieldDrift.imbalance`). The mean
+    drift, a difference of large far-field terms, needs the balance.
+    """
+    import capytaine as cpt
+
+    body, _, z_lid = capytaine_body(spec)
+    with _quiet_capytaine():
+        lid = body.mesh.generate_lid(z=z_lid) if z_lid is not None else None
+        return cpt.FloatingBody(mesh=body.mesh, lid_mesh=lid, dofs=cpt.rigid_body_dofs(rotation_center=(0.0, 0.0, 0.0)),
+                                center_of_mass=tuple(spec.cog), mass=spec.total_mass, name=spec.name)
+
+
 def mirror_directions(X_half: np.ndarray, beta_half_deg: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     r"""Complete 0..180° excitation to 0..360° by port/starboard symmetry.
 
-    :math:`X_i(360° - \beta) = s_i X_i(\beta)` with :data:`PORT_STARBOARD_SIGN` ``s``.
+    :math:`X_i(360° - \beta) = s_i X_i(\beta)` with :data:`PORT_STARBOARD_SIGN` ``s``; the mean drift
+    (real, same layout) follows the same rule.
 
     Parameters
     ----------
@@ -225,15 +252,18 @@ def _problems(cpt, body, omega, betas_rad, rho, g, depth):
     return rad, dif
 
 
-def _solve(cpt, solver, body, omega, betas_rad, rho, g, depth):
-    """A, B (6, 6) and X (6, Nb) (exp(+iωt)) at one frequency; one ``solve_all`` so that Capytaine
-    reuses the LU-decomposed influence matrix for all problems. Failed problems give NaN."""
+def _solve(cpt, solver, body, omega, betas_rad, rho, g, depth, M=None, C=None):
+    """A, B (6, 6), X (6, Nb) (exp(+iωt)) and, when the mass and restoring matrices ``M``, ``C`` are given,
+    the far-field mean drift of the free-floating body (a :class:`boatland.hydro.drift.FarFieldDrift`; else
+    None) at one frequency; one ``solve_all`` so that Capytaine reuses the LU-decomposed influence matrix for all
+    problems. Failed problems give NaN."""
     from capytaine.bem.airy_waves import froude_krylov_force
 
     from capytaine.tools.block_circulant_matrices import NestedBlockCirculantMatrix
 
     rad, dif = _problems(cpt, body, omega, betas_rad, rho, g, depth)
-    results = solver.solve_all(rad + dif, progress_bar=False, keep_details=False)
+    with_drift = M is not None and len(dif) > 0
+    results = solver.solve_all(rad + dif, progress_bar=False, keep_details=with_drift)
     # Capytaine 3.0.0 memoises NestedBlockCirculantMatrix.to_BlockCirculantMatrix with a class-level
     # lru_cache (128 entries) that keeps every frequency's influence matrices alive: ~0.75 GB per
     # frequency for a 3700-panel quarter-symmetric hull (measured), an OOM kill within a band.
@@ -249,10 +279,11 @@ def _solve(cpt, solver, body, omega, betas_rad, rho, g, depth):
         fk = froude_krylov_force(pb)
         for i, d in enumerate(CPT_DOFS):
             X[i, k] = np.conj(complex(res.forces[d]) + complex(fk[d]))  # exp(−iωt) → exp(+iωt)
-    return A, B, X
+    far = drift_from_results(results[:len(rad)], results[len(rad):], M, C) if with_drift else None
+    return A, B, X, far
 
 
-def build_database(spec: VesselSpec, *, progress: bool = True) -> HydroDB:
+def build_database(spec: VesselSpec, *, progress: bool = True, drift: bool = True) -> HydroDB:
     """Solve the radiation and diffraction problems of ``spec`` with Capytaine; return the database.
 
     Parameters
@@ -261,12 +292,19 @@ def build_database(spec: VesselSpec, *, progress: bool = True) -> HydroDB:
         The vessel (hull, mass properties, environment, mesh, frequencies, directions).
     progress : bool
         Show a progress bar over the frequencies (only when stderr is a terminal).
+    drift : bool
+        Also compute the far-field mean drift (surge, sway, yaw) of the free-floating vessel from the same
+        solves (:mod:`boatland.hydro.drift`): the sources are kept and their Kochin functions evaluated,
+        which adds a few per cent to the build time (noted in the provenance). False leaves ``drift`` None.
+        With the builder's lid, which touches the hull, the far field fails the energy check at some
+        frequencies (:func:`drift_body`; the figure is in the note): for a drift to trust, add it afterwards
+        with ``add_drift(db, body=drift_body(spec))``.
 
     Returns
     -------
     HydroDB
-        A, B at every frequency, X for 0..360°, A_inf and A_0 (deep water), C, M, the full wetted
-        hull mesh, and provenance notes saying how it was computed.
+        A, B at every frequency, X for 0..360°, A_inf and A_0 (deep water), C, M, the mean drift, the full
+        wetted hull mesh, and provenance notes saying how it was computed.
     """
     from tqdm import tqdm
 
@@ -285,44 +323,61 @@ def build_database(spec: VesselSpec, *, progress: bool = True) -> HydroDB:
     A = np.full((6, 6, nf), np.nan)
     B = np.full((6, 6, nf), np.nan)
     X_half = np.full((6, nb, nf), np.nan + 0j)
+    D_half = np.full((6, nb, nf), np.nan) if drift else None
+    imbalance = np.full((nb, nf), np.nan)
     notes: list[str] = []
 
     bar = tqdm(omegas, desc=f"{spec.name}: Capytaine", unit="ω", leave=False,
                disable=not (progress and sys.stderr.isatty()))
     with _quiet_capytaine():
+        C_cpt = body.compute_hydrostatic_stiffness(rho=rho, g=g)
+        C = np.array(C_cpt.sel(influenced_dof=list(CPT_DOFS), radiating_dof=list(CPT_DOFS)).values, dtype=float)
+        M = spec.mass_matrix()
         for k, w in enumerate(bar):
-            A[:, :, k], B[:, :, k], X_half[:, :, k] = _solve(cpt, solver, body, float(w), betas_rad, rho, g, depth)
+            A[:, :, k], B[:, :, k], X_half[:, :, k], d = _solve(cpt, solver, body, float(w), betas_rad, rho, g, depth,
+                                                                *((M, C) if drift else ()))
+            if drift:
+                D_half[:, :, k], imbalance[:, k] = d.drift, d.imbalance
         limits = {}
         for name, w in (("A_0", 0.0), ("A_inf", np.inf)):
             # Capytaine's solve_all turns a failed problem into NaN (finite depth has no ω = 0 limit)
-            a_lim, _, _ = _solve(cpt, solver, body, w, [], rho, g, depth)
+            a_lim = _solve(cpt, solver, body, w, [], rho, g, depth)[0]
             if not np.all(np.isfinite(a_lim)):
                 notes.append(f"{name} not computed: Capytaine returned NaN at ω = {w} in water depth {depth:g} m")
                 a_lim = None
             limits[name] = a_lim
-        C_cpt = body.compute_hydrostatic_stiffness(rho=rho, g=g)
-        C = np.array(C_cpt.sel(influenced_dof=list(CPT_DOFS), radiating_dof=list(CPT_DOFS)).values, dtype=float)
         volume = float(body.volume)
         cob = np.asarray(body.center_of_buoyancy, dtype=float)
     bar.close()
 
     good = np.all(np.isfinite(A), axis=(0, 1)) & np.all(np.isfinite(B), axis=(0, 1)) & np.all(np.isfinite(X_half), axis=(0, 1))
+    if drift:
+        good &= np.all(np.isfinite(D_half), axis=(0, 1))
     if not np.all(good):
         bad = omegas[~good]
         notes.append(f"dropped {bad.size} frequencies where Capytaine failed (NaN): "
                      + ", ".join(f"{w:.4g}" for w in bad[:10]) + (" …" if bad.size > 10 else "") + " rad/s")
         omegas, A, B, X_half = omegas[good], A[:, :, good], B[:, :, good], X_half[:, :, good]
+        D_half = D_half[:, :, good] if drift else None
+        imbalance = imbalance[:, good]
     X, beta = mirror_directions(X_half, beta_half)
+    D = mirror_directions(D_half, beta_half)[0] if drift else None
 
-    notes = _notes(spec, hull, counts, z_lid, omegas, B, C, volume, time.perf_counter() - t0) + notes
+    seconds = time.perf_counter() - t0
+    notes = _notes(spec, hull, counts, z_lid, omegas, B, C, volume, seconds) + notes
+    if drift:
+        n_panels = int(body.mesh.nb_faces)
+        notes.append(far_field_note(n_panels, z_lid is not None, extra="computed with the build from the same "
+                                    "solves (0–180° solved, the rest mirrored: D_i(−β) = s_i D_i(β)); "
+                                    + imbalance_text(imbalance, D)))
     prov = Provenance(source=spec.source or f"VesselSpec {spec.name!r}", solver=SOLVER,
                       created=datetime.now(timezone.utc).isoformat(timespec="seconds"),
                       reader="boatland.hydro.build", notes=tuple(notes))
     return HydroDB(
         omega=omegas, A=A, B=B, X=X, wave_dir_deg=beta, C=C, A_inf=limits["A_inf"], A_0=limits["A_0"],
-        M=spec.mass_matrix(), ref_point=np.zeros(3), cog=spec.cog, cob=cob, disp_vol=volume,
+        M=M, ref_point=np.zeros(3), cog=spec.cog, cob=cob, disp_vol=volume,
         water_depth=depth, rho=rho, g=g, name=spec.name, provenance=prov, mesh=hull.mesh(counts),
-        topsides=hull.topsides() if isinstance(hull, CTVCatamaran) else None,
+        topsides=hull.topsides() if isinstance(hull, CTVCatamaran) else None, drift=D,
     )
 
 

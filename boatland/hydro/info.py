@@ -19,7 +19,8 @@ def summary(db: HydroDB) -> dict:
         name, solver, source, frequency band and count, directions and their coverage
         (:func:`boatland.vessel.directions.direction_coverage`: kind and text), depth, ρ, g, mass, volume,
         centre of gravity, A∞/A₀ availability, heave/roll/pitch natural periods (s, None where not
-        defined), panel count, and the warnings of :meth:`HydroDB.diagnostics`.
+        defined), panel count, whether it has mean drift coefficients, and the warnings of
+        :meth:`HydroDB.diagnostics`.
     """
     w = db.omega
     beta = db.wave_dir_deg
@@ -50,6 +51,7 @@ def summary(db: HydroDB) -> dict:
         "has_A_0": db.A_0 is not None,
         "natural_periods": db.natural_periods(),
         "n_panels": None if db.mesh is None else db.mesh.n_panels,
+        "has_drift": db.drift is not None,
         "warnings": db.diagnostics(),
     }
 
@@ -82,6 +84,12 @@ def summary_text(db: HydroDB) -> str:
     ]
     if s["n_panels"] is not None:
         lines.append(f"  hull mesh       {s['n_panels']} panels")
+    if s["has_drift"]:
+        how = next((n[len("mean drift:"):].strip() for n in reversed(db.provenance.notes)
+                    if n.startswith("mean drift:")), "source not noted")
+        lines.append(f"  mean drift      {how[:100]}{'…' if len(how) > 100 else ''}")
+    else:
+        lines.append("  mean drift      none")
     if s["warnings"]:
         lines.append("warnings:")
         lines.extend(f"  - {w}" for w in s["warnings"])

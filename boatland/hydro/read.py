@@ -25,9 +25,9 @@ __all__ = ["FORMATS", "database_of", "detect_format", "load_database", "read_hyd
 #: Format name → what the input looks like (for messages and ``--help``).
 FORMATS = {
     "bemio": "BEMIO HDF5 file (.h5/.hdf5): boatland's own, WEC-Sim's, HydroChrono's",
-    "wamit": "WAMIT output: .1 (+ .3, .hst, .out beside it) or the .out file",
+    "wamit": "WAMIT output: .1 (+ .3, .hst, .out, .8/.9 mean drift beside it) or the .out file",
     "nemoh": "NEMOH v2/v3 run folder (Nemoh.cal, Mesh/, Results/)",
-    "aqwa": "AQWA .AH1 (+ .LIS beside it)",
+    "aqwa": "AQWA .AH1 (+ .LIS beside it; mean drift from its wave-drift tables or the FARFIELD block)",
     "capytaine": "Capytaine NetCDF dataset (.nc)",
     "vessel": "vessel file (.toml) with a [bem] table: any of the above plus its mass, centre of gravity, inertia",
 }
@@ -62,7 +62,7 @@ def detect_format(path: str | Path) -> str:
                                          "expected a BEMIO HDF5 database or a Capytaine NetCDF dataset")
     if suffix == ".toml":
         return "vessel"
-    if suffix in (".1", ".3", ".hst", ".out"):
+    if suffix in (".1", ".3", ".hst", ".out", ".8", ".9"):
         return "wamit"
     if suffix in (".ah1", ".lis"):
         return "aqwa"
@@ -73,7 +73,7 @@ def detect_format(path: str | Path) -> str:
 
 
 def read_hydro(path: str | Path, *, fmt: str | None = None, rho: float | None = None,
-               g: float | None = None, **options) -> tuple[HydroDB, str]:
+               g: float | None = None, drift: str = "auto", **options) -> tuple[HydroDB, str]:
     """Read any supported BEM output into a :class:`HydroDB`.
 
     Parameters
@@ -85,6 +85,11 @@ def read_hydro(path: str | Path, *, fmt: str | None = None, rho: float | None = 
     rho, g : float, optional
         Water density and gravity, for formats that do not store them (WAMIT is non-dimensional
         in ρ). Ignored by formats that do.
+    drift : {"auto", "pressure", "momentum", "none"}
+        Which mean drift output fills ``HydroDB.drift`` when it is beside the main file (WAMIT ``.9`` /
+        ``.8``, AQWA ``.LIS`` tables / ``.AH1`` FARFIELD): ``"auto"`` the pressure-integration (six DOFs)
+        one, else the momentum (far-field: surge, sway, yaw) one. BEMIO files carry their own drift (read
+        whatever they hold); NEMOH and Capytaine NetCDF outputs are read without drift.
     **options
         Passed to the reader (e.g. ``ref_point=`` for Capytaine files, which do not store it).
 
@@ -99,13 +104,13 @@ def read_hydro(path: str | Path, *, fmt: str | None = None, rho: float | None = 
         return read_bemio(path), fmt
     if fmt == "wamit":
         from boatland.hydro.wamit import read_wamit
-        return read_wamit(path, rho=rho, g=g), fmt
+        return read_wamit(path, rho=rho, g=g, drift=drift), fmt
     if fmt == "nemoh":
         from boatland.hydro.nemoh import read_nemoh
         return read_nemoh(path), fmt
     if fmt == "aqwa":
         from boatland.hydro.aqwa import read_aqwa
-        return read_aqwa(path), fmt
+        return read_aqwa(path, drift=drift), fmt
     if fmt == "capytaine":
         from boatland.hydro.capytaine_nc import read_capytaine
         return read_capytaine(path, **options), fmt

@@ -8,6 +8,13 @@ Format (WAMIT User Manual v7, ch. 4 "Output"; notes/hydro-formats.md):
 - ``.3``  ``PER BETA I Mod Pha Re Im``: diffraction excitation, β in degrees (direction of travel).
 - ``.hst`` ``I J Cbar``: hydrostatic and gravitational restoring.
 - ``.out`` (optional): gravity, length scale ULEN, water depth, body position, volumes, centres.
+- ``.8`` / ``.9`` (optional) ``PER BETA1 BETA2 I Mod Pha Re Im``: mean drift forces by momentum
+  conservation (far field: I = 1, 2, 6 only) and by pressure integration (near field: I = 1..6, and
+  I = −4, −5, −6 for the moments in body-fixed axes, which are not read: the positive modes are in the
+  mean-position axes, as X and the ``.8``). Only rows with BETA1 = BETA2 (unidirectional waves) are
+  read; the mean drift is the real part ``Re`` (WAMIT User Manual v7, §4.8–4.9). When both files exist
+  the ``.9`` is used by default (it gives all six DOFs); ``drift="momentum"`` takes the ``.8``, which is
+  often the more accurate in surge, sway and yaw; ``drift="none"`` reads neither.
 
 Every file may start with a one-line text header (WEC-Sim's do, OpenFAST's do not): both are read.
 
@@ -17,7 +24,10 @@ translation–translation, mixed and rotation–rotation pairs and ``m = k − 1
 
 .. math::
     A = \bar A \rho L^k, \qquad B = \bar B \rho \omega L^k, \qquad
-    C = \bar C \rho g L^{m}, \qquad X = \bar X \rho g L^{m}.
+    C = \bar C \rho g L^{m}, \qquad X = \bar X \rho g L^{m}, \qquad
+    \bar F = \bar F_{wamit}\,\rho g L^{m - 1}
+
+(the mean drift per unit wave amplitude squared, :math:`m - 1 = 1` for forces, 2 for moments).
 
 WAMIT uses exp(+iωt) with phases referred to the incident wave at the origin of its global frame,
 which is boatland's convention: no conjugation. Points (reference point, centres) are reported in a
@@ -33,13 +43,16 @@ from pathlib import Path
 
 import numpy as np
 
+from boatland.conventions import DOF_NAMES
 from boatland.errors import HydroDataError
 from boatland.hydro._text import TextFile, build_db, find_sibling, is_number, normalise_directions
 from boatland.vessel.database import HydroDB, Provenance
 
 __all__ = ["read_wamit"]
 
-_SUFFIXES = (".1", ".3", ".hst", ".out")
+_SUFFIXES = (".1", ".3", ".hst", ".out", ".8", ".9")
+#: ``drift=`` choices: mean drift file used, in order of preference.
+DRIFT_FILES = {"auto": (".9", ".8"), "pressure": (".9",), "momentum": (".8",), "none": ()}
 RHO_DEFAULT = 1025.0
 G_DEFAULT = 9.81
 
@@ -47,19 +60,25 @@ G_DEFAULT = 9.81
 _K = 3 + (np.arange(6)[:, None] >= 3) + (np.arange(6)[None, :] >= 3)
 
 
-def read_wamit(path: str | Path, rho: float | None = None, g: float | None = None) -> HydroDB:
-    """Read a WAMIT run (``.1`` + ``.3`` + ``.hst``, optional ``.out``) into a :class:`HydroDB`.
+def read_wamit(path: str | Path, rho: float | None = None, g: float | None = None,
+               drift: str = "auto") -> HydroDB:
+    """Read a WAMIT run (``.1`` + ``.3`` + ``.hst``, optional ``.out``, ``.8``, ``.9``) into a :class:`HydroDB`.
 
     Parameters
     ----------
     path : str or Path
-        Any of the run's ``.1``, ``.3``, ``.hst`` or ``.out`` files; the others are found beside it
-        by their common stem.
+        Any of the run's ``.1``, ``.3``, ``.hst``, ``.out``, ``.8`` or ``.9`` files; the others are found
+        beside it by their common stem.
     rho : float, optional
         Water density [kg/m³]. WAMIT files do not store it; default 1025 (with a provenance note).
     g : float, optional
         Gravity [m/s²], used only when there is no ``.out`` file (the ``.out`` value is the one
         WAMIT non-dimensionalised with); default 9.81 with a note.
+    drift : {"auto", "pressure", "momentum", "none"}
+        Which mean drift file fills ``HydroDB.drift`` when it is beside the run: ``"auto"`` the ``.9``
+        (pressure integration, six DOFs) else the ``.8`` (momentum conservation: surge, sway, yaw; the
+        others 0); ``"pressure"`` / ``"momentum"`` only that one; ``"none"`` neither. A provenance note
+        says which was read.
 
     Returns
     -------
@@ -74,6 +93,8 @@ def read_wamit(path: str | Path, rho: float | None = None, g: float | None = Non
         restoring coefficients) or malformed; the message names the file and line.
     """
     path = Path(path)
+    if drift not in DRIFT_FILES:
+        raise HydroDataError(path, "drift", f"unknown choice {drift!r}; expected one of {', '.join(DRIFT_FILES)}")
     if path.suffix.lower() not in _SUFFIXES:
         raise HydroDataError(path, None, f"not a WAMIT output file; expected one of {', '.join(_SUFFIXES)}")
     if not path.exists():
@@ -130,6 +151,12 @@ def read_wamit(path: str | Path, rho: float | None = None, g: float | None = Non
     X = exc.Xbar * rho * gg * L ** m[:, None, None]
     beta, keep, groups = normalise_directions(exc.beta)
     X = _merge_directions(X, beta, keep, groups, exc.beta, notes)
+    mean_drift = None
+    for suffix in DRIFT_FILES[drift]:
+        if files[suffix] is not None:
+            mean_drift = _read_drift(TextFile(files[suffix], _DRIFT_WHAT[suffix]), periods, exc.beta, notes)
+            mean_drift = mean_drift[:, keep] * rho * gg * L ** (m[:, None, None] - 1)
+            break
 
     notes += out.notes
     if out.ulen_missing and files[".out"] is not None:
@@ -140,7 +167,7 @@ def read_wamit(path: str | Path, rho: float | None = None, g: float | None = Non
     return build_db(
         path, omega=omega, A=A, B=B, X=X, wave_dir_deg=beta, C=C, A_inf=A_inf, A_0=A_0, M=None,
         ref_point=z0, cog=out.cog + z0, cob=out.cob + z0, disp_vol=out.volume,
-        water_depth=out.depth, rho=rho, g=gg, name=stem.name, provenance=prov,
+        water_depth=out.depth, rho=rho, g=gg, name=stem.name, provenance=prov, drift=mean_drift,
     )
 
 
@@ -350,6 +377,70 @@ def _read_excitation(tf: TextFile, periods: np.ndarray) -> _Excitation:
                                     f"BETA = {betas[b]:g}°, which the .1 file has (truncated file, or .1 and "
                                     ".3 from different runs?)")
     return _Excitation(Xbar=Xbar, beta=np.array(betas))
+
+
+_DRIFT_WHAT = {".8": "WAMIT .8 file (mean drift forces, momentum conservation)",
+               ".9": "WAMIT .9 file (mean drift forces, pressure integration)"}
+
+
+def _read_drift(tf: TextFile, periods: np.ndarray, betas_x, notes: list[str]) -> np.ndarray:
+    """Mean drift (6, Nb_in, Nf), non-dimensional, at the ``.3`` file's directions ``betas_x`` (as in that
+    file) and the ``.1`` file's ``periods``; DOFs the file does not give are 0."""
+    rows, skipped_pairs, body_fixed = [], 0, 0
+    for n, tokens in _data_lines(tf):
+        if len(tokens) != 8:
+            raise tf.error(n, f"expected 'PER BETA1 BETA2 I Mod Pha Re Im' (8 columns), found {len(tokens)} columns")
+        per, b1, b2 = tf.numbers(n, tokens[:3], what="PER, BETA1 and BETA2")
+        i = tf.integer(n, tokens[3], what="I")
+        tf.numbers(n, tokens[4:6], what="Mod and Pha of the drift force")
+        re_ = tf.numbers(n, tokens[6:7], what="Re of the drift force")[0]
+        tf.numbers(n, tokens[7:8], what="Im of the drift force")
+        if b1 != b2:
+            skipped_pairs += 1
+            continue
+        if i < 0:
+            body_fixed += 1
+            continue
+        if not 1 <= i <= 6:
+            raise tf.error(n, f"I = {i}: multi-body or generalised-mode WAMIT runs are not supported (expected 1..6)")
+        rows.append((n, per, b1, i - 1, re_))
+    if not rows:
+        raise tf.error(None, "no data rows with BETA1 = BETA2; expected lines 'PER BETA1 BETA2 I Mod Pha Re Im' "
+                             "(run WAMIT with IOPTN(8/9) = 1 for unidirectional drift)")
+    betas = list(betas_x)
+    D = np.zeros((6, len(betas), periods.size))
+    filled = np.zeros((len(betas), periods.size), dtype=bool)
+    dofs, seen = set(), {}
+    for n, per, beta, i, value in rows:
+        k = np.flatnonzero(np.isclose(periods, per, rtol=1e-6, atol=0))
+        if k.size != 1:
+            raise tf.error(n, f"period PER = {per:g} s is not among the .1 file's periods; the drift and "
+                              "radiation files must come from the same run")
+        b = [j for j, bx in enumerate(betas) if abs(bx - beta) <= 1e-6 * max(1.0, abs(beta))]
+        if not b:
+            raise tf.error(n, f"BETA = {beta:g}° is not among the .3 file's directions "
+                              f"({', '.join(f'{x:g}' for x in betas)}°)")
+        key = (int(k[0]), b[0], i)
+        if key in seen:
+            raise tf.error(n, f"duplicate entry PER={per:g}, BETA={beta:g}, I={i + 1} (first on line {seen[key]})")
+        seen[key] = n
+        D[i, b[0], k[0]] = value
+        filled[b[0], k[0]] = True
+        dofs.add(i)
+    if not filled.all():
+        b, k = np.argwhere(~filled)[0]
+        raise tf.error(rows[-1][0], f"the data end here without drift at PER = {periods[k]:g} s, BETA = "
+                                    f"{betas[b]:g}°, which the .1 and .3 files have (truncated file, or files "
+                                    "from different runs?)")
+    method = "pressure integration (near field)" if tf.path.suffix == ".9" else "momentum conservation (far field)"
+    given = ", ".join(DOF_NAMES[i] for i in sorted(dofs))
+    zero = [DOF_NAMES[i] for i in range(6) if i not in dofs]
+    notes.append(f"mean drift: WAMIT {method} from {tf.path.name}, real part of the BETA1 = BETA2 rows, in "
+                 f"mean-position axes; DOFs given: {given}"
+                 + (f"; {', '.join(zero)} not in the file (0)" if zero else "")
+                 + (f"; {body_fixed} body-fixed moment rows (I < 0) not read" if body_fixed else "")
+                 + (f"; {skipped_pairs} bidirectional rows (BETA1 ≠ BETA2) not read" if skipped_pairs else ""))
+    return D
 
 
 def _read_hst(tf: TextFile) -> np.ndarray:

@@ -216,9 +216,8 @@ def flows(ctx: Context, heading: float) -> tuple[Current | None, Wind | None]:
             out.append(None)
             continue
         raw = ctx.raw(key)
-        if "direction_deg" in raw and "relative_direction_deg" in raw:
-            ctx.add(f"{key}.relative_direction_deg", f"give either {key}.direction_deg or "
-                                                     f"{key}.relative_direction_deg, not both")
+        ctx.one_of(raw, f"{key}.", ("relative_direction_deg", "direction_deg"),
+                   "the direction it moves towards: 180 onto the bow, 90 from starboard")
         if "table" in d and any(k in raw for k in ("c_x", "c_y", "c_n")):
             ctx.add(f"{key}.table", f"give either {key}.table or the amplitudes c_x, c_y, c_n, not both")
         t = d.get("table")

@@ -29,7 +29,7 @@ from __future__ import annotations
 import numpy as np
 
 from boatland.errors import BoatlandInputError
-from boatland.vessel.directions import full_circle_excitation
+from boatland.vessel.directions import full_circle_drift
 from boatland.waves.excitation import excitation_coefficients
 from boatland.waves.realisation import Components
 from boatland.waves.synthesis import harmonic_series
@@ -41,12 +41,13 @@ DRIFT_MODES = ("none", "mean", "newman")
 
 def _table(db) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """(omega, beta_deg, D) of the database's drift, completed to the circle as X is, with ω = 0 prepended."""
-    D = getattr(db, "drift", None)
-    if D is None:
+    table = full_circle_drift(db)
+    if table is None:
         raise BoatlandInputError(f"the database {db.name!r} has no mean drift coefficients (sea.drift needs them): "
                                  "import a BEM output that has them (WAMIT .8/.9, AQWA, ...) or add them to a "
                                  "Capytaine-built database (boatland.hydro.drift)")
-    beta, Dc = full_circle_excitation(db.replace(X=np.asarray(D, dtype=complex)))
+    beta, D = table
+    Dc = np.asarray(D, dtype=complex)
     omega = np.asarray(db.omega, dtype=float)
     if omega[0] > 0:
         omega = np.concatenate([[0.0], omega])

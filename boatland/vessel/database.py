@@ -182,6 +182,14 @@ class HydroDB:
     topsides : HullMesh, optional
         The hull above the waterline (topsides, deck, deckhouse) in the body frame, for the viewers
         only (:mod:`boatland.record.scene`); no computation uses it.
+    drift : ndarray, shape (6, Nb, Nf), optional
+        Mean (second-order) wave drift force and moment per unit wave amplitude squared [N/m², N·m/m²] on
+        the vessel at rest, at ``wave_dir_deg`` and ``omega`` (same layout as ``X``), body axes at the mean
+        position, moments about ``ref_point``: a regular wave of amplitude a pushes with ``drift * a**2``.
+        None when the source has none. How it was obtained and which DOFs are meaningful (far-field
+        methods give surge, sway and yaw only, the others 0) is in a provenance note beginning
+        ``"mean drift:"``; see :mod:`boatland.hydro.drift`. :meth:`replace` carries it to a subset of the
+        frequencies or directions.
     """
 
     omega: np.ndarray
@@ -204,6 +212,7 @@ class HydroDB:
     provenance: Provenance = field(default_factory=Provenance)
     mesh: HullMesh | None = None
     topsides: HullMesh | None = None
+    drift: np.ndarray | None = None
 
     def __post_init__(self):
         src = self.provenance.source or None
@@ -247,6 +256,7 @@ class HydroDB:
         object.__setattr__(self, "C", check("C", self.C, (N_DOF, N_DOF)))
         for name in ("A_inf", "A_0", "M"):
             object.__setattr__(self, name, check(name, getattr(self, name), (N_DOF, N_DOF), optional=True))
+        object.__setattr__(self, "drift", check("drift", self.drift, (N_DOF, nb, nf), optional=True))
         for name in ("ref_point", "cog", "cob"):
             object.__setattr__(self, name, check(name, np.reshape(getattr(self, name), -1), (3,)))
         for name, lo in (("rho", 0.0), ("g", 0.0), ("water_depth", 0.0)):
@@ -276,7 +286,18 @@ class HydroDB:
         return None if self.M is None else float(self.M[0, 0])
 
     def replace(self, **changes: Any) -> "HydroDB":
-        """A new database with some fields changed (validated again)."""
+        """A new database with some fields changed (validated again).
+
+        The mean drift follows a change of ``omega`` or ``wave_dir_deg`` that does not give ``drift``: it is
+        taken at the new frequencies and directions when the table holds every one of them (directions
+        modulo 360°, e.g. a half circle cut out of a full one); otherwise it is dropped (None) with a
+        provenance note, since nothing can be said about frequencies or directions it was not computed at.
+        """
+        if self.drift is not None and "drift" not in changes and ("omega" in changes or "wave_dir_deg" in changes):
+            drift, note = _carried_drift(self, changes.get("omega", self.omega), changes.get("wave_dir_deg", self.wave_dir_deg))
+            changes["drift"] = drift
+            if note:
+                changes["provenance"] = changes.get("provenance", self.provenance).with_note(note)
         return dataclasses.replace(self, **changes)
 
     def natural_periods(self, dofs=(2, 3, 4)) -> dict[str, float | None]:
@@ -352,6 +373,22 @@ class HydroDB:
                             "a time-domain run")
         warnings.extend(self.provenance.notes)
         return warnings
+
+
+def _carried_drift(db: HydroDB, omega, wave_dir_deg) -> tuple[np.ndarray | None, str]:
+    """``db.drift`` at the frequencies ``omega`` and directions ``wave_dir_deg`` of a replaced database, or
+    (None, why) when the table does not hold them all."""
+    w_old, w_new = db.omega, np.asarray(omega, dtype=float).reshape(-1)
+    b_old = np.mod(db.wave_dir_deg, 360.0)
+    b_new = np.mod(np.asarray(wave_dir_deg, dtype=float).reshape(-1), 360.0)
+    dw = np.abs(w_new[:, None] - w_old[None, :])
+    db_ = np.abs(np.mod(b_new[:, None] - b_old[None, :] + 180.0, 360.0) - 180.0)
+    found_w = dw <= 1e-9 * np.maximum(np.abs(w_new[:, None]), 1e-300)
+    found_b = db_ <= 1e-6
+    if found_w.any(axis=1).all() and found_b.any(axis=1).all():
+        return db.drift[:, np.argmax(found_b, axis=1)][:, :, np.argmax(found_w, axis=1)], ""
+    return None, ("mean drift dropped: the database was given frequencies or directions its drift table "
+                  "does not hold (pass drift= with them)")
 
 
 def roll_critical_damping(db: HydroDB) -> float:

@@ -32,7 +32,9 @@ an interval, or a single direction
 
 The database object itself is never changed: :func:`full_circle_excitation` builds the completed
 table for :func:`boatland.sea.states.excitation_table`, the one place the time domain and the
-frequency domain take X from.
+frequency domain take X from. The mean drift (``HydroDB.drift``, real, same layout) obeys the same
+reflection, :math:`D_j(360° - \beta) = s_j D_j(\beta)`; :func:`full_circle_drift` completes it on the
+same directions as X.
 """
 
 from __future__ import annotations
@@ -46,7 +48,7 @@ from boatland.vessel.database import HydroDB
 from boatland.waves.excitation import DIRECTION_ATOL_DEG, PERIODIC_STEP_RTOL, periodic_directions
 
 __all__ = ["DirectionCoverage", "SYMMETRY_RTOL", "Symmetry", "direction_coverage", "direction_problem",
-           "full_circle_excitation", "port_starboard_symmetry"]
+           "full_circle_drift", "full_circle_excitation", "port_starboard_symmetry"]
 
 #: Largest relative port–starboard asymmetry (:func:`port_starboard_symmetry`) for which a half-circle
 #: database is completed by mirroring. Well above round-off: BEM text output keeps 5–7 significant
@@ -335,11 +337,30 @@ def full_circle_excitation(db: HydroDB, coverage: DirectionCoverage | None = Non
         Directions [deg], increasing (in [0, 360) when completed).
     X : ndarray of complex, shape (6, Nb', Nf)
     """
-    cov = coverage or direction_coverage(db)
+    return _completed(db, np.asarray(db.X, dtype=complex), coverage or direction_coverage(db))
+
+
+def full_circle_drift(db: HydroDB, coverage: DirectionCoverage | None = None) -> tuple[np.ndarray, np.ndarray] | None:
+    r"""(beta_deg, drift) of ``db``, completed to the circle like :func:`full_circle_excitation`, by
+    :math:`D_j(-\beta) = s_j D_j(\beta)` (a mirrored wave pushes the mirrored body with the mirrored mean
+    force); None when the database has no mean drift.
+
+    Returns
+    -------
+    beta_deg : ndarray, shape (Nb',)
+        The same directions as :func:`full_circle_excitation` gives.
+    drift : ndarray, shape (6, Nb', Nf)
+    """
+    if db.drift is None:
+        return None
+    return _completed(db, np.asarray(db.drift, dtype=float), coverage or direction_coverage(db))
+
+
+def _completed(db: HydroDB, T: np.ndarray, cov: DirectionCoverage) -> tuple[np.ndarray, np.ndarray]:
+    """The (6, Nb, Nf) table ``T`` of ``db``'s directions completed by mirroring when ``cov`` says so."""
     beta = np.asarray(db.wave_dir_deg, dtype=float)
-    X = np.asarray(db.X, dtype=complex)
     if cov.kind != "mirrored":
-        return beta, X
+        return beta, T
     b = np.mod(beta, 360.0)
     b = np.where(b >= 360.0 - DIRECTION_ATOL_DEG, 0.0, b)
     m = np.mod(-beta, 360.0)
@@ -347,9 +368,9 @@ def full_circle_excitation(db: HydroDB, coverage: DirectionCoverage | None = Non
     dist = np.abs(np.mod(m[:, None] - b[None, :] + 180.0, 360.0) - 180.0)
     new = ~np.any(dist <= DIRECTION_ATOL_DEG, axis=1)
     all_b = np.concatenate([b, m[new]])
-    all_X = np.concatenate([X, PORT_STARBOARD_SIGN[:, None, None] * X[:, new, :]], axis=1)
+    all_T = np.concatenate([T, PORT_STARBOARD_SIGN[:, None, None] * T[:, new, :]], axis=1)
     order = np.argsort(all_b, kind="stable")
-    return all_b[order], all_X[:, order, :]
+    return all_b[order], all_T[:, order, :]
 
 
 def direction_problem(db: HydroDB, directions, *, name: str | None = None,

@@ -255,6 +255,11 @@ def apply_mass_properties(db: HydroDB, mp: MassProperties, source: str = "") -> 
     if dC > 0:
         notes.append(f"restoring moved to this mass and CoG: C44 {db.C[3, 3]:.6g} → {C[3, 3]:.6g}, "
                      f"C55 {db.C[4, 4]:.6g} → {C[4, 4]:.6g}")
+    if db.drift is not None and (db.M is None or not np.allclose(M, db.M, rtol=1e-6, atol=1e-9 * mass)
+                                 or not np.allclose(C, db.C, rtol=1e-6, atol=1e-9 * max(np.max(np.abs(db.C)), 1.0))):
+        notes.append("mean drift kept as the BEM output gives it: it was computed with the motions of the BEM "
+                     "run's own mass properties, not these (recompute it with boatland.hydro.drift.add_drift "
+                     "when they differ much)")
     size = max(db.disp_vol, 1e-300) ** (1 / 3)
     off = np.hypot(*(cog[:2] - db.cob[:2]))
     if db.disp_vol > 0 and off > OFFSET_NOTE * size:

@@ -78,7 +78,7 @@ def test_current_sweep_and_the_side_to_land_on(default_landing):
     assert np.all(sw.Hs[0] == sw.Hs[0, 0])                       # no current: one landing
     assert sw.Hs[1, 1] < sw.Hs[1, 0] and sw.Hs[1, 1] == pytest.approx(sw.Hs[1, 3], rel=1e-6)  # symmetric beams
     advice = sw.advice()
-    assert len(advice) == 1 and "worst on the beam from" in advice[0]
+    assert len(advice) == 1 and "worst on the beam (90°) or 270° (either side)" in advice[0]
 
 
 def test_screen_current_sweep_cli(tmp_path):

@@ -160,3 +160,52 @@ def test_units_other_than_si(run):
     _edit_line(p, k, lambda s: s.replace("1025.000", "   1.025"))
     with pytest.raises(HydroDataError, match=rf"cylinder\.AH1: line {k - 1}: GENERAL: .*expected SI units"):
         read_aqwa(p)
+
+
+# ------------------------------------------------------------------------------ mean drift
+def test_lis_drift_tables(cyl):
+    """Default: the .LIS wave-drift tables (near field here: all six DOFs), N/m² and N·m/m² about the COG;
+    at 4.096 rad/s the SURGE(X) row reads −4.73E+02 4.73E+02 −4.73E+02 for −180°, 0°, 180°."""
+    D = cyl.drift
+    assert D.shape == (6, 2, 50) and np.all(np.isfinite(D))
+    k = int(np.argmin(np.abs(cyl.omega - 4.096)))
+    assert D[0, 0, k] == 4.73e2 and D[0, 1, k] == -4.73e2              # 0° and 180° (= the file's −180°)
+    assert D[2, :, k].tolist() == [1.82e2, 1.82e2] and D[4, 0, k] == 2.20e2 and D[4, 1, k] == -2.19e2
+    assert D[5, 1, 0] == 2.54e-3                                       # YAW(RZ) at 0.040 rad/s
+    note = next(n for n in cyl.provenance.notes if n.startswith("mean drift:"))
+    assert "cylinder.LIS" in note and "near-field pressure integration: all six DOFs" in note
+    assert any(n.startswith("mean drift at -180°, 180°: kept -180°") for n in cyl.provenance.notes)
+
+
+def test_farfield_block_on_request_or_without_lis(refdata, run, cyl):
+    """drift="momentum": the .AH1 FARFIELD block (AQWA's far field: surge, sway, yaw); '1 2 20' is
+    5.0423E+02 5.0658E-02 0 0 0 −6.1438E-04 (0°, 4.096 rad/s)."""
+    far = read_aqwa(refdata / "aqwa_cylinder" / "cylinder.AH1", drift="momentum")
+    assert far.drift[:, 0, 19].tolist() == [5.0423e02, 5.0658e-02, 0.0, 0.0, 0.0, -6.1438e-04]
+    assert far.drift[0, 1, 19] == -5.0422e02                            # the file's −180°
+    assert np.all(far.drift[[2, 3, 4]] == 0)
+    assert any("FARFIELD block" in n and "surge, sway and yaw only" in n for n in far.provenance.notes)
+    assert read_aqwa(refdata / "aqwa_cylinder" / "cylinder.AH1", drift="none").drift is None
+    (run / "cylinder.LIS").unlink()
+    assert np.array_equal(read_aqwa(run / "cylinder.AH1").drift, far.drift)          # auto without a .LIS
+    alone = read_aqwa(run / "cylinder.AH1", drift="pressure")
+    assert alone.drift is None and any("mean drift: none read" in n for n in alone.provenance.notes)
+    with pytest.raises(HydroDataError, match="drift: unknown choice 'near'"):
+        read_aqwa(run / "cylinder.AH1", drift="near")
+
+
+def test_bad_lis_drift_table(run):
+    p = run / "cylinder.LIS"
+    lines = _lines(p)
+    k = next(n for n, s in enumerate(lines, start=1) if s.strip() == "HEAVE(Z)")
+    p.write_text("".join(lines[:k + 20] + lines[k + 23:]))              # three HEAVE(Z) rows lost
+    with pytest.raises(HydroDataError, match=r"cylinder\.LIS: wave-drift tables: no HEAVE\(Z\) value at -180°, 4\.309 rad/s"):
+        read_aqwa(run / "cylinder.AH1")
+    p.write_text("".join(lines))
+    _edit_line(p, k, lambda s: "   SURGEX\n")
+    with pytest.raises(HydroDataError, match=rf"cylinder\.LIS: line {k}: wave-drift table .*expected one of SURGE\(X\)"):
+        read_aqwa(run / "cylinder.AH1")
+    p.write_text("".join(lines))
+    _edit_line(p, k + 5, lambda s: s.replace("0.894", "0.999"))
+    with pytest.raises(HydroDataError, match=rf"line {k + 5}: wave-drift table: frequency 0\.999 rad/s is not one"):
+        read_aqwa(run / "cylinder.AH1")

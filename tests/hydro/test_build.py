@@ -110,6 +110,49 @@ def test_coarse_build_is_symmetric_and_follows_conventions(coarse):
     assert abs(np.angle(db.X[2, 2, 0])) < 0.15
 
 
+def test_coarse_build_has_the_far_field_drift(coarse):
+    """The build computes the mean drift from its own solves: surge, sway and yaw (heave, roll, pitch 0),
+    mirrored like X, down-wave in head and following seas (at these frequencies the long waves push
+    little: the test asks the sign where the drift is above 1 % of its largest value), towards port in
+    waves travelling to port."""
+    spec, db, _ = coarse
+    D = db.drift
+    assert D.shape == (6, 4, db.n_freq) and np.all(np.isfinite(D)) and np.all(D[[2, 3, 4]] == 0)
+    assert np.array_equal(D[:, 3], PORT_STARBOARD_SIGN[:, None] * D[:, 1])          # 270° mirrors 90°
+    big = np.abs(D[:2]).max()
+    for b, sign, i in ((0, 1, 0), (2, -1, 0), (1, 1, 1)):                             # 0°, 180°: surge; 90°: sway
+        strong = np.abs(D[i, b]) > 0.01 * big
+        assert strong.any() and np.all(np.sign(D[i, b][strong]) == sign), (b, D[i, b])
+    assert np.max(np.abs(D[[1, 5]][:, [0, 2]])) <= 1e-8 * big * max(1.0, spec.hull.length)
+    note = next(n for n in db.provenance.notes if n.startswith("mean drift:"))
+    assert "far-field" in note and "surge, sway and yaw only" in note
+
+
+def test_drift_body_uses_capytaines_lid_inside_the_waterline():
+    """boatland.hydro.build.drift_body: the builder's symmetric hull, Capytaine's generated lid at the builder's
+    height, which keeps clear of the hull (less area than the builder's lid, which covers the waterplane)."""
+    from boatland.hydro.build import capytaine_body, drift_body
+
+    spec = load_vessel(vessel_file("ctv24"))
+    ref, _, z_lid = capytaine_body(spec)
+    body = drift_body(spec)
+    assert np.array_equal(body.mesh.faces_centers, ref.mesh.faces_centers)
+    assert type(body.lid_mesh).__name__ == "ReflectionSymmetricMesh"
+    assert np.allclose(body.lid_mesh.faces_centers[:, 2], z_lid)
+    assert 0.7 * ref.lid_mesh.faces_areas.sum() < body.lid_mesh.faces_areas.sum() < 0.95 * ref.lid_mesh.faces_areas.sum()
+
+
+def test_build_without_drift_gives_the_same_arrays():
+    """Keeping the sources for the drift changes nothing else, bit for bit."""
+    spec = load_vessel(vessel_file("ctv24")).replace(direction_step_deg=90.0, panel_size=0.5, omega_min=0.96,
+                                                     omega_max=1.92, d_omega=0.48)
+    db = build_database(spec, progress=False)
+    plain = build_database(spec, progress=False, drift=False)
+    assert plain.drift is None and not any(n.startswith("mean drift:") for n in plain.provenance.notes)
+    for name in ("omega", "A", "B", "X", "C", "A_inf", "A_0", "M"):
+        assert np.array_equal(getattr(plain, name), getattr(db, name)), name
+
+
 def test_coarse_build_hydrostatics_match_closed_form(coarse):
     spec, db, _ = coarse
     C_ref = spec.hull.restoring(spec.rho, spec.g, spec.total_mass, spec.cog)
@@ -125,7 +168,7 @@ def test_written_database_reads_back_exactly(coarse, tmp_path):
     _, db, _ = coarse
     path = write_bemio(db, tmp_path / "coarse.h5")
     back = read_bemio(path)
-    for name in ("omega", "A", "B", "X", "wave_dir_deg", "C", "A_inf", "A_0", "M", "ref_point", "cog", "cob"):
+    for name in ("omega", "A", "B", "X", "wave_dir_deg", "C", "A_inf", "A_0", "M", "ref_point", "cog", "cob", "drift"):
         assert np.array_equal(getattr(back, name), getattr(db, name)), name
     assert np.array_equal(back.mesh.vertices, db.mesh.vertices)
     assert np.array_equal(back.mesh.faces, db.mesh.faces)

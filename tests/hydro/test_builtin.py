@@ -26,7 +26,8 @@ def test_names_and_paths():
     for name in BUILTIN:
         path = builtin_path(name)
         assert path.is_file() and path.suffix == ".h5"
-        # 125 ω × 72 β (5° steps), gzip: ctv24 and model2 2.45 MB each (2026-11-21), ctv27 2.55 MB (2026-12-01)
+        # 125 ω × 72 β (5° steps), gzip: ctv24 and model2 2.45 MB each (2026-11-21), ctv27 2.55 MB (2026-12-01),
+        # 2.75 MB with its mean drift (2026-12-03)
         assert path.stat().st_size < 4_000_000
         assert vessel_file(name).name == f"{name}.toml"
 
@@ -203,3 +204,23 @@ def test_ctv27_passes_the_builders_checks():
         assert peaks[i].size and np.all(np.abs(peaks[i] - w_n) <= 0.02 * w_n), (i, peaks[i], w_n)
     assert db.topsides is not None and db.topsides.vertices[:, 2].max() > 2.0
     assert db.mesh.vertices[:, 2].max() <= 1e-9
+
+
+def test_ctv27_carries_its_mean_drift():
+    """ctv27's far-field mean drift (added with boatland.hydro.drift.add_drift, see boatland/hydro/builtin.py):
+    surge, sway, yaw; port–starboard mirrored; down-wave in head, following and beam seas (to 0.1 % of the
+    largest value: at long waves the drift is tens of N/m² against 40 kN/m², inside the energy check)."""
+    db = load_builtin("ctv27")
+    D = db.drift
+    assert D.shape == (6, 72, 125) and np.all(np.isfinite(D)) and np.all(D[[2, 3, 4]] == 0)
+    b = db.wave_dir_deg
+    for j in np.flatnonzero(b > 180.0):
+        m = int(np.flatnonzero(np.isclose(b, 360.0 - b[j]))[0])
+        assert np.allclose(D[:, j], PORT_STARBOARD_SIGN[:, None] * D[:, m], rtol=0, atol=1e-9 * np.abs(D).max())
+    big = np.abs(D[:2]).max()
+    head, follow, beam = (int(np.flatnonzero(b == x)[0]) for x in (180.0, 0.0, 90.0))
+    assert D[0, head].max() < 1e-3 * big and D[0, follow].min() > -1e-3 * big and D[1, beam].min() > -1e-3 * big
+    assert D[0, head].min() < -0.2 * np.abs(D[0]).max()                  # it does push the bow off
+    notes = [n for n in db.provenance.notes if n.startswith("mean drift:")]
+    assert any("far-field" in n and "energy check" in n for n in notes) and any("drift_body" in n for n in notes)
+    assert load_builtin("ctv24").drift is None and load_builtin("model2").drift is None

@@ -217,3 +217,107 @@ def test_dof_beyond_6_is_refused(run):
 def test_not_a_wamit_suffix(tmp_path):
     with pytest.raises(HydroDataError, match=r"run\.txt: not a WAMIT output file"):
         read_wamit(tmp_path / "run.txt")
+
+
+# ----------------------------------------------------------------- mean drift (.8 / .9)
+# MSS's semi-submersible (tests/data/refdata/wamit_semisub, MIT; see its README.md): .1, .3, .hst and the
+# pressure-integration mean drift .9, no .out (ULEN 1, deep water).
+
+@pytest.fixture(scope="module")
+def semisub(refdata):
+    return read_wamit(refdata / "wamit_semisub" / "semisub.1", rho=1025.0, g=9.81)
+
+
+@pytest.fixture
+def semisub_run(refdata, tmp_path):
+    for f in (refdata / "wamit_semisub").iterdir():
+        shutil.copy(f, tmp_path / f.name)
+    return tmp_path
+
+
+def test_semisub_drift_is_read_and_scaled(semisub, refdata):
+    """Re of the BETA1 = BETA2 rows times ρ g L (forces) and ρ g L² (moments); the body-fixed moments
+    (I = −4, −5, −6: 29 periods × 19 headings × 3) are skipped and said so."""
+    D = semisub.drift
+    assert D.shape == (6, 19, 29) and semisub.wave_dir_deg.tolist() == list(range(0, 181, 10))
+    k = int(np.argmin(np.abs(semisub.omega - 2 * np.pi / 4.5)))      # first rows of the file: PER 4.5 s, 0°
+    rho_g = 1025.0 * 9.81
+    assert D[0, 0, k] == pytest.approx(1.309227e01 * rho_g, rel=1e-12)
+    assert D[2, 0, k] == pytest.approx(7.384665e00 * rho_g, rel=1e-12)
+    assert D[4, 0, k] == pytest.approx(1.165086e02 * rho_g, rel=1e-12)
+    assert D[5, 1, k] == pytest.approx(2.688983e01 * rho_g, rel=1e-12)   # 10°, I = 6 (not the −6 row)
+    note = next(n for n in semisub.provenance.notes if n.startswith("mean drift:"))
+    assert "pressure integration" in note and "semisub.9" in note and "1653 body-fixed moment rows" in note
+    assert "DOFs given: surge, sway, heave, roll, pitch, yaw" in note
+
+
+def test_semisub_drift_has_the_physics_of_a_symmetric_hull(semisub):
+    """Down-wave in head, following and beam seas; no sway or yaw drift in them; fore–aft symmetry
+    (β → 180° − β: F_x, M_z change sign, F_y, F_z keep it) to the file's precision."""
+    D = semisub.drift
+    big = np.abs(D).max(axis=(1, 2))
+    i0, i90, i180 = 0, 9, 18
+    assert np.all(D[0, i0] > -1e-6 * big[0]) and np.all(D[0, i180] < 1e-6 * big[0])
+    assert np.all(D[1, i90] > -1e-3 * big[1])
+    for i in (1, 5):
+        assert np.abs(D[i, [i0, i180]]).max() < 1e-5 * big[i]
+    assert np.abs(D[5, i90]).max() < 1e-5 * big[5]
+    assert np.allclose(D[0], -D[0, ::-1], rtol=0, atol=1e-4 * big[0])
+    assert np.allclose(D[1], D[1, ::-1], rtol=0, atol=1e-4 * big[1])
+    assert np.allclose(D[5], -D[5, ::-1], rtol=0, atol=1e-3 * big[5])
+
+
+def test_drift_file_as_the_path_and_read_hydro(refdata, semisub):
+    db, fmt = read_hydro(refdata / "wamit_semisub" / "semisub.9", rho=1025.0, g=9.81)
+    assert fmt == "wamit" and np.array_equal(db.drift, semisub.drift) and np.array_equal(db.X, semisub.X)
+    assert read_hydro(refdata / "wamit_semisub" / "semisub.1", drift="none")[0].drift is None
+    assert read_wamit(refdata / "wamit_semisub" / "semisub.1", drift="momentum").drift is None   # no .8
+    assert read_wamit(refdata / "wamit_sphere" / "sphere.1").drift is None                       # no drift files
+
+
+def test_momentum_file_is_preferred_on_request(semisub_run, semisub):
+    """A .8 (momentum conservation) beside the .9. No public .8 was found: this one is the .9's own
+    surge, sway and yaw rows (the same 8-column layout, WAMIT manual §4.8), halved to tell them apart."""
+    rows = []
+    for line in (semisub_run / "semisub.9").read_text().splitlines():
+        t = line.split()
+        if t[3] in ("1", "2", "6"):
+            t[6] = f"{float(t[6]) / 2:.6E}"
+            rows.append("  ".join(t))
+    (semisub_run / "semisub.8").write_text("\n".join(rows) + "\n")
+    auto = read_wamit(semisub_run / "semisub.1", rho=1025.0, g=9.81)
+    assert np.array_equal(auto.drift, semisub.drift)                                  # .9 by default
+    mom = read_wamit(semisub_run / "semisub.1", rho=1025.0, g=9.81, drift="momentum")
+    assert np.allclose(mom.drift[[0, 1, 5]], semisub.drift[[0, 1, 5]] / 2, rtol=1e-6, atol=1e-9)
+    assert np.all(mom.drift[[2, 3, 4]] == 0)
+    note = next(n for n in mom.provenance.notes if n.startswith("mean drift:"))
+    assert "momentum conservation" in note and "heave, roll, pitch not in the file (0)" in note
+    (semisub_run / "semisub.9").unlink()
+    assert np.array_equal(read_wamit(semisub_run / "semisub.1", rho=1025.0, g=9.81).drift, mom.drift)
+
+
+def test_drift_length_scale(semisub_run, semisub):
+    """ULEN = 2 (from a .out): drift forces × 2, moments × 4."""
+    (semisub_run / "semisub.out").write_text(" Gravity:     9.81000                Length scale:        2.00000\n"
+                                             " Water depth:        infinite\n")
+    db = read_wamit(semisub_run / "semisub.1", rho=1025.0)
+    assert np.allclose(db.drift[:3], semisub.drift[:3] * 2, rtol=1e-14)
+    assert np.allclose(db.drift[3:], semisub.drift[3:] * 4, rtol=1e-14)
+
+
+def test_bad_drift_files(semisub_run, refdata):
+    p = semisub_run / "semisub.9"
+    good = p.read_text()
+    p.write_text("".join(good.splitlines(keepends=True)[:-200]))
+    with pytest.raises(HydroDataError, match=r"semisub\.9: line \d+: the data end here without drift at PER"):
+        read_wamit(semisub_run / "semisub.1")
+    p.write_text(good.replace("0.450000E+01", "0.460000E+01", 1))
+    with pytest.raises(HydroDataError, match=r"semisub\.9: line 1: period PER = 4\.6 s is not among the \.1"):
+        read_wamit(semisub_run / "semisub.1")
+    lines = good.splitlines(keepends=True)
+    lines[4] = " ".join(lines[4].split()[:7]) + "\n"
+    p.write_text("".join(lines))
+    with pytest.raises(HydroDataError, match=r"line 5: expected 'PER BETA1 BETA2 I Mod Pha Re Im' \(8 columns\), found 7"):
+        read_wamit(semisub_run / "semisub.1")
+    with pytest.raises(HydroDataError, match="drift: unknown choice 'far'"):
+        read_wamit(refdata / "wamit_semisub" / "semisub.1", drift="far")
