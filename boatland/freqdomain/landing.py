@@ -17,6 +17,7 @@ from boatland.freqdomain.rao import hinged_rao
 from boatland.landing.law import SteadyLoad, normal_follows
 from boatland.landing.setup import Setup
 from boatland.sea.drift import mean_drift
+from boatland.sea.states import SeaState
 from boatland.sea.pile import Pile, pile_scattered_excitation
 from boatland.vessel.database import HydroDB
 from boatland.waves.excitation import direction_brackets, periodic_directions
@@ -232,6 +233,24 @@ class LandingSetup:
         share = min(1.0, s_all / s_lin) if s_lin > 0 else 1.0
         return setup.replace(steady=dataclasses.replace(setup.steady, linear_share=share))
 
+    def with_drift(self, db: HydroDB, parts, water_depth: float | None = None) -> "LandingSetup":
+        """The setup with the mean wave drift of the sea ``parts`` (spectral parts, global directions) added to its
+        steady loads, when the scenario applies drift (``sea.drift``); the setup itself otherwise.
+
+        The expected mean :math:`\\sum_i a_i^2 D(\\omega_i, \\theta_i - \\psi)` of the parts' components (their
+        amplitudes are the spectrum's: deterministic), :func:`boatland.sea.drift.mean_drift`. It depends on the sea
+        (∝ H_s², on the direction), so a table over T_p and directions (:func:`~boatland.freqdomain.screening.
+        screening_grid`) leaves it out; it is tens of newtons at ctv27's landing limits (README)."""
+        env = self.environment
+        if env is None or env.drift == "none" or getattr(db, "drift", None) is None:
+            return self
+        sea = SeaState(parts=tuple(parts), water_depth=math.inf if water_depth is None else float(water_depth),
+                       g=float(db.g))
+        F = mean_drift(db, sea.realise(0, 1800.0), self.heading_deg)
+        st = self.steady if self.steady is not None else SteadyLoad(force=np.zeros(6), stiffness=np.zeros((6, 6)),
+                                                                     damping=np.zeros((6, 6)))
+        return self.replace(steady=dataclasses.replace(st, force=st.force + F))
+
     def replace(self, **changes) -> "LandingSetup":
         """A copy with some attributes changed (e.g. ``mu=0.8, thrust=120e3``)."""
         return dataclasses.replace(self, **changes)
@@ -324,15 +343,7 @@ class LandingSetup:
                       roll_limit_deg=lim, pile=setup.pile, position=setup.start_pose[:2], fender_width=f.width,
                       tube_radius=np.array([st.diameter / 2 for st in scenario.landing.struts]),
                       thrust_direction=setup.environment.push_direction,
-                      steady=setup.environment.steady_load(drift_force=_mean_drift(setup)),
+                      steady=setup.environment.steady_load(),
                       environment=setup.environment)
         landing.check_on_hull(db, src)
         return landing.with_drag_linearised(db)
-
-
-def _mean_drift(setup: Setup):
-    """The sea's mean wave drift on the vessel when the scenario applies it (None otherwise)."""
-    if setup.environment.drift == "none" or setup.waves is None:
-        return None
-    comps = setup.waves.realise(setup.scenario.simulation.seed, setup.n_steps * setup.dt)
-    return mean_drift(setup.db, comps, setup.environment.heading_deg)

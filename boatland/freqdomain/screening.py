@@ -350,8 +350,10 @@ def sea_response(db: HydroDB, setup: LandingSetup, parts, *, water_depth: float 
         weights.append(wgt)
         owner.append(np.full(d.size, i))
     beta = (np.concatenate(dirs) - setup.heading_deg) % 360.0
-    tr = slip_transfer(db, setup, omega=omega, beta_deg=beta, method=method)
     h = db.water_depth if water_depth is None else water_depth
+    if method != "wu":
+        setup = setup.with_drift(db, parts, h)      # the sea's own mean wave drift, when the scenario applies it
+    tr = slip_transfer(db, setup, omega=omega, beta_deg=beta, method=method)
     w = tr.omega
     S = np.stack([p.spectrum(w, h, db.g) for p in parts])[np.concatenate(owner)]     # (Nβ, Nw)
     S = S * np.concatenate(weights)[:, None]
