@@ -196,8 +196,9 @@ class LandingSetup:
         cross-flow drag (:meth:`boatland.landing.environment.Environment.drag_damping`: Gaussian equivalent
         linearisation, :math:`B = 2k\,E|w|`) at the strips' velocity standard deviations σ — the gusts' part
         (iterated with the response, as σ depends on B, to a relative change below ``rtol``) and the waves'
-        ``wave_sigma`` (n, 2), added in quadrature (independent processes). Without a cross-flow drag, the
-        setup as it is; without gusts, only the waves' σ."""
+        ``wave_sigma`` (n, 2), added in quadrature (independent processes); the drag's mean load grows with the
+        same σ (:meth:`boatland.landing.environment.Environment.drag_mean_shift`) and enters the steady force.
+        Without a cross-flow drag, the setup as it is; without gusts, only the waves' σ."""
         if not self.drag_linearisable:
             return self
         env, st = self.environment, self.steady
@@ -207,7 +208,8 @@ class LandingSetup:
 
         def damped(sig_g):
             sig = sig_g if sw is None else np.sqrt(sig_g ** 2 + sw ** 2)
-            return self.replace(steady=dataclasses.replace(st, damping=B_det + env.drag_damping(sig) - B_0))
+            return self.replace(steady=dataclasses.replace(st, damping=B_det + env.drag_damping(sig) - B_0,
+                                                           force=st.force + env.drag_mean_shift(sig)))
 
         sig_g = np.zeros(env.strip_maps().shape[:2])
         setup = damped(sig_g)

@@ -234,6 +234,25 @@ class Environment:
                           + mu * erf(mu / (np.sqrt(2) * np.where(sig > 0, sig, 1.0))), mu)
         return np.einsum("ia,iaj,iak->jk", 2 * k * Ew, G, G)
 
+    def drag_mean_shift(self, sigma) -> np.ndarray:
+        r"""The change (6,) of the cross-flow drag's mean load when each strip's relative velocity fluctuates
+        about the current's with standard deviations ``sigma`` (n, 2): :math:`\sum_i \sum_a k_{a,i}
+        (E[w|w|] - \mu|\mu|)\,g_{a,i}`, :math:`E[w|w|] = (\mu^2 + \sigma^2)(2\Phi(\mu/\sigma) - 1) +
+        2\mu\sigma\,\varphi(\mu/\sigma)` for a Gaussian w — the waves' motions make the drag's mean larger
+        (for a strong current by :math:`k\sigma^2`), unequally along the hull."""
+        from scipy.stats import norm
+
+        c = self.current
+        G = self.strip_maps()
+        mu = np.broadcast_to(self.current_velocity[:2], (G.shape[0], 2))     # body = local at rest, signed
+        k = np.stack([0.5 * c.rho * c.area_x * c.coefficients[0] * c.strips[:, 2],
+                      0.5 * c.rho * c.area_y * c.coefficients[1] * c.strips[:, 2]], axis=1)
+        sig = np.asarray(sigma, dtype=float)
+        safe = np.where(sig > 0, sig, 1.0)
+        r = mu / safe
+        E = np.where(sig > 0, (mu * mu + sig * sig) * (2 * norm.cdf(r) - 1) + 2 * mu * sig * norm.pdf(r), mu * np.abs(mu))
+        return np.einsum("ia,iaj->j", k * (E - mu * np.abs(mu)), G)
+
     def mean_wind(self) -> np.ndarray:
         """The mean wind load (6,) in the local frame."""
         return np.zeros(6) if self.wind_load is None else self.wind.mean_force(self.wind_load, self.heading_deg)

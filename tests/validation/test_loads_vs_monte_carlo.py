@@ -13,10 +13,10 @@ load                   heading  H_s     time domain          screening
 =====================  =======  ======  ===================  =========
 current 1 m/s beam     180°     0.415   10/24 [0.22, 0.63]   0.331
 current 1 m/s beam     180°     0.46    20/24 [0.63, 0.95]   0.747
-current 1 m/s beam     135°     0.395   15/24 [0.41, 0.81]   0.360  ✗
-current 1 m/s beam     135°     0.43    20/24 [0.63, 0.95]   0.729
-current 1 m/s beam     90°      0.21    4/24 [0.05, 0.37]    0.342
-current 1 m/s beam     90°      0.23    13/24 [0.33, 0.74]   0.757  ✗
+current 1 m/s beam     135°     0.39    14/24 [0.37, 0.78]   0.372
+current 1 m/s beam     135°     0.425   20/24 [0.63, 0.95]   0.758
+current 1 m/s beam     90°      0.215   4/24 [0.05, 0.37]    0.381  ✗
+current 1 m/s beam     90°      0.235   18/24 [0.53, 0.90]   0.783
 wind 10 kn beam        180°     0.485   6/24 [0.10, 0.47]   0.337
 wind 10 kn beam        180°     0.54    18/24 [0.53, 0.90]   0.736
 wind 10 kn beam        135°     0.335   11/24 [0.26, 0.67]   0.341
@@ -25,11 +25,13 @@ wind 10 kn beam        90°      0.205   8/24 [0.16, 0.55]    0.391
 wind 10 kn beam        90°      0.22    13/24 [0.33, 0.74]   0.722
 =====================  =======  ======  ===================  =========
 
-The two misses are marked (strict xfail, so that a fix shows): in beam seas the screening's P rises faster
-with H_s than the time domain's for ctv27 without any current too (11/24 [0.26, 0.67] against 0.765 at
-0.225 m); with the beam current in bow-quartering seas it lies below the time domain's (with 48 other seeds
-32/48 [0.52, 0.80] against 0.360) although every margin's mean and standard deviation agree within 3 % —
-under investigation (issue 27).
+The miss is marked (strict xfail, so that a fix shows): in beam seas the screening's P rises faster with H_s
+than the time domain's for ctv27 without any current too (11/24 [0.26, 0.67] against 0.765 at 0.225 m) — on the
+safe side. With the beam current in bow-quartering seas the screening sits at the low edge: with 48 other
+seeds (master seed 7) 29/48 [0.45, 0.74] against 0.372 and 45/48 [0.83, 0.99] against 0.758 — a limiting H_s
+about 5 % high there, the one unsafe bias found (issue 27 leaves it open). The drag's mean load grows with the
+waves' motions (boatland.landing.environment.Environment.drag_mean_shift), which the screening counts since
+2026-12-03 (it moved this point from 0.360 to 0.372 and the time domain's mean normal forces are matched).
 """
 
 import pytest
@@ -38,7 +40,7 @@ from boatland.validation.loads import LOADS, compare
 
 SEEDS = 24
 #: Points the screening misses today (load, heading, 0/1 = the lower/higher H_s) — the module docstring.
-KNOWN = {("current 1 m/s beam", 135.0, 0), ("current 1 m/s beam", 90.0, 1)}
+KNOWN = {("current 1 m/s beam", 90.0, 0)}
 _DONE: dict = {}
 
 
