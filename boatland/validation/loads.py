@@ -85,12 +85,37 @@ def run_loads(ctx: Context) -> Outcome:
                                     r["fd"], None))
     inside = sum(bool(c.passed) for c in checks if c.passed is not None)
     judged = sum(c.passed is not None for c in checks)
-    return Outcome(checks, f"{inside}/{judged} inside", None,
+    name = ctx.save(_figure(rows, seeds), "loads_vs_monte_carlo.png")
+    return Outcome(checks, f"{inside}/{judged} inside", name,
                    ["The wave heights are where the screening predicts P = 0.35 and 0.75 per 30 min with the load, "
                     "rounded to 5 mm. With many points at 95 % each, one outside in a run is chance; several on one "
                     "side is a bias (the module docstring says which are known)."],
                    settings=f"ctv27 (scenarios/ctv_landing.toml), {seeds} seeds × 30 min per point"
                             + (" (--quick: head seas, one H_s, 12 seeds)" if ctx.quick else ""))
+
+
+def _figure(rows: list[dict], seeds: int):
+    """Per load and heading: the time domain's P with its 95 % interval (bars) and the screening's (crosses)."""
+    from boatland.plotstyle import pyplot
+
+    plt = pyplot()
+    labels = list(dict.fromkeys(r["load"] for r in rows))
+    fig, axes = plt.subplots(1, len(labels), figsize=(4.2 * len(labels), 3.8), constrained_layout=True, squeeze=False)
+    for ax, label in zip(axes[0], labels):
+        for i, d in enumerate(HEADINGS):
+            sel = [r for r in rows if r["load"] == label and r["heading"] == d]
+            if not sel:
+                continue
+            h = [r["Hs"] for r in sel]
+            ax.errorbar(h, [r["p"] for r in sel], yerr=[[r["p"] - r["lo"] for r in sel], [r["hi"] - r["p"] for r in sel]],
+                        fmt="o", color=f"C{i}", capsize=3, label=f"{d:g}°: time domain")
+            ax.plot(h, [r["fd"] for r in sel], "x", color=f"C{i}", ms=8, mew=2, label=f"{d:g}°: screening")
+        ax.set(xlabel="H_s [m]", ylabel="P(first slip within 30 min)", ylim=(-0.02, 1.02), title=label)
+        ax.title.set_fontsize(9)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7)
+    fig.suptitle(f"ctv27, Tp {FD_TD_TP:g} s: screening vs Monte Carlo ({seeds} seeds per point)", fontsize=10)
+    return fig
 
 
 CASES = [
