@@ -363,10 +363,9 @@ def sea_response(db: HydroDB, setup: LandingSetup, parts, *, water_depth: float 
     wt[1:] += dw / 2
     if method != "wu" and setup.drag_linearisable:
         # the hull's drag sees the waves' velocities too: linearise it with them (twice: they change a little)
-        base = setup
         for _ in range(DRAG_PASSES):
-            sig = base.strip_sigma(w, (S * wt[None, :]).T, tr.motions)
-            tr = slip_transfer(db, base.with_drag_linearised(db, wave_sigma=sig), omega=omega, beta_deg=beta,
+            sig = setup.strip_sigma(w, (S * wt[None, :]).T, tr.motions)
+            tr = slip_transfer(db, setup.with_drag_linearised(db, wave_sigma=sig), omega=omega, beta_deg=beta,
                                method=method)
     m = np.einsum("bw,w,wbr,wk->rk", S, wt, np.abs(tr.H) ** 2, w[:, None] ** np.arange(3)[None, :])
     cov = np.einsum("bw,w,wbi,wbj->ij", S, wt, tr.H, tr.H.conj()).real

@@ -301,9 +301,9 @@ def _per_frequency(block: _Block, nf: int) -> list[np.ndarray]:
     return out
 
 
-def _excitation(block: _Block, ndir: int, nf: int) -> np.ndarray:
-    """FORCERAO → X (6, ndir, nf), conjugated from AQWA's phase lags to boatland's leads."""
-    X = np.zeros((6, ndir, nf), dtype=complex)
+def _records(block: _Block, ndir: int, nf: int):
+    """The (direction, frequency) indices of the ``ndir × nf`` records of a block (body, direction and frequency
+    numbers, then the record's values, read by the caller), each pair once."""
     seen = np.zeros((ndir, nf), dtype=bool)
     for _ in range(ndir * nf):
         block.integer("the body number", lo=1, hi=1)
@@ -313,10 +313,17 @@ def _excitation(block: _Block, ndir: int, nf: int) -> np.ndarray:
         if seen[d, k]:
             raise block.error(f"direction {d + 1}, frequency {k + 1} appears twice", at=line)
         seen[d, k] = True
+        yield d, k
+    block.done(f"{ndir} directions × {nf} frequencies")
+
+
+def _excitation(block: _Block, ndir: int, nf: int) -> np.ndarray:
+    """FORCERAO → X (6, ndir, nf), conjugated from AQWA's phase lags to boatland's leads."""
+    X = np.zeros((6, ndir, nf), dtype=complex)
+    for d, k in _records(block, ndir, nf):
         amp = block.floats(6, "6 force amplitudes")
         phase = block.floats(6, "6 phases [deg]")
         X[:, d, k] = amp * np.exp(-1j * np.deg2rad(phase))
-    block.done(f"{ndir} directions × {nf} frequencies")
     return X
 
 
@@ -346,17 +353,8 @@ def _mean_drift(choice: str, blocks: dict, lis: TextFile | None, beta_in: np.nda
 def _farfield(block: _Block, ndir: int, nf: int) -> np.ndarray:
     """FARFIELD → (6, ndir, nf): per (direction, frequency) index Fx Fy Fz Mx My Mz."""
     D = np.zeros((6, ndir, nf))
-    seen = np.zeros((ndir, nf), dtype=bool)
-    for _ in range(ndir * nf):
-        block.integer("the body number", lo=1, hi=1)
-        line = block.items[min(block.pos, len(block.items) - 1)][1]
-        d = block.integer("the direction index", lo=1, hi=ndir) - 1
-        k = block.integer("the frequency index", lo=1, hi=nf) - 1
-        if seen[d, k]:
-            raise block.error(f"direction {d + 1}, frequency {k + 1} appears twice", at=line)
-        seen[d, k] = True
+    for d, k in _records(block, ndir, nf):
         D[:, d, k] = block.floats(6, "6 mean drift forces and moments")
-    block.done(f"{ndir} directions × {nf} frequencies")
     return D
 
 

@@ -127,9 +127,9 @@ class Environment:
             e_T = env.trim(scenario)
         return dataclasses.replace(env, push_direction=e_T)
 
-    def trim(self, scenario, drift_force=None) -> np.ndarray:
+    def trim(self, scenario) -> np.ndarray:
         r"""The skipper's push direction against the steady yaw moment: the angle α whose side force balances
-        the moment of current, mean wind (and ``drift_force``) about the middle of the fender points
+        the moment of current and mean wind about the middle of the fender points
         :math:`r_f`, so that the two tubes share the push equally,
 
         .. math:: T\left[(x_T - x_f)\sin\alpha - (y_T - y_f)\cos\alpha\right] + M^s_z - (x_f F^s_y - y_f F^s_x) = 0
@@ -143,8 +143,6 @@ class Environment:
             The push cannot balance the moment within ±60°.
         """
         F = self.current_force() + self.mean_wind()
-        if drift_force is not None:
-            F = F + np.asarray(drift_force, dtype=float)
         thr = scenario.thrust
         if not np.any(F) or scenario.fender is None:
             return np.array([1.0, 0.0, 0.0])
@@ -257,13 +255,12 @@ class Environment:
         """The mean wind load (6,) in the local frame."""
         return np.zeros(6) if self.wind_load is None else self.wind.mean_force(self.wind_load, self.heading_deg)
 
-    def steady_load(self, x0=None, drift_force=None) -> SteadyLoad | None:
+    def steady_load(self, x0=None) -> SteadyLoad | None:
         """The steady loads as the frequency domain takes them (module docstring), linearised about ``x0``
-        (default the start pose); ``drift_force`` (6,): the sea's mean drift when the scenario applies it.
-        None when there is nothing steady besides the push."""
+        (default the start pose); the sea's mean drift is added per sea
+        (:meth:`boatland.freqdomain.landing.LandingSetup.with_drift`). None when there is nothing steady besides
+        the push."""
         F = self.current_force(x0) + self.mean_wind()
-        if drift_force is not None:
-            F = F + np.asarray(drift_force, dtype=float)
         K = np.zeros((6, 6))
         B = self.current_damping(x0)
         if self.current is not None:

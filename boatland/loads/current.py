@@ -32,7 +32,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from boatland.loads.drag import DragLoad, crossflow_table, drag_keys, geometry_from, table_from
+from boatland.loads.drag import DragLoad, crossflow_table, drag_keys, geometry_from, global_direction, table_from
 from boatland.tomlspec import Key, Table
 
 __all__ = ["CURRENT_TABLE", "DEFAULTS", "Current", "side_words"]
@@ -62,8 +62,7 @@ class Current:
 
     @classmethod
     def from_table(cls, t: dict, heading_deg: float) -> "Current":
-        d = t["direction_deg"] if "direction_deg" in t else heading_deg + t.get("relative_direction_deg", 180.0)
-        return cls(speed=float(t["speed"]), direction_deg=float(d) % 360.0, values=dict(t))
+        return cls(speed=float(t["speed"]), direction_deg=global_direction(t, heading_deg), values=dict(t))
 
     def velocity_local(self, heading_deg: float) -> np.ndarray:
         """The water's velocity (3,) in the vessel's start axes (heading ``heading_deg``) [m/s]."""

@@ -42,8 +42,8 @@ from numba import njit
 from boatland.rigid import add_point_force
 from boatland.tomlspec import Key, Table, Vector
 
-__all__ = ["DragTable", "DragLoad", "add_drag", "crossflow_table", "drag_keys", "geometry_from", "linear_table",
-           "silhouette", "table_from"]
+__all__ = ["DragTable", "DragLoad", "add_drag", "crossflow_table", "drag_keys", "geometry_from", "global_direction",
+           "linear_table", "silhouette", "table_from"]
 
 #: Angular resolution of the default tables [deg].
 TABLE_STEP_DEG = 5.0
@@ -367,6 +367,14 @@ def drag_keys(what: str, defaults: dict) -> dict:
     }
 
 
+def global_direction(values: dict, heading_deg: float) -> float:
+    """The global direction [deg, 0 … 360) a flow moves towards, from a validated ``[current]``/``[wind]`` table:
+    its ``direction_deg``, else the vessel's heading plus its ``relative_direction_deg`` (the loader requires
+    one of them)."""
+    d = values["direction_deg"] if "direction_deg" in values else heading_deg + values["relative_direction_deg"]
+    return float(d) % 360.0
+
+
 def table_from(values: dict, shape, defaults: dict, source: str) -> dict:
     """The coefficients of a validated ``[current]``/``[wind]`` table as :class:`DragLoad` fields (``table``,
     ``form``, ``coefficients``): its ``table`` if given (form "table"), else ``shape(c_x, c_y, c_n)`` with the
@@ -376,13 +384,11 @@ def table_from(values: dict, shape, defaults: dict, source: str) -> dict:
     Raises
     ------
     ValueError
-        A table that is neither 0…180 nor 0…360 or not periodic (the message names the key).
+        A table :class:`DragTable` refuses (the scenario loader names the key before it gets here).
     """
     t = values.get("table")
     if t is not None:
         a = np.asarray(t["angles_deg"], dtype=float)
-        if any(len(t[k]) != a.size for k in ("cx", "cy", "cn")):
-            raise ValueError("table: angles_deg, cx, cy and cn must have the same length")
         if a[-1] == 180.0:
             tab = DragTable.from_half(a, t["cx"], t["cy"], t["cn"], source=f"{source}: table")
         else:

@@ -35,7 +35,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from boatland.loads.drag import DragLoad, drag_keys, geometry_from, linear_table, table_from
+from boatland.loads.drag import DragLoad, drag_keys, geometry_from, global_direction, linear_table, table_from
 from boatland.tomlspec import Key, Table
 
 __all__ = ["DEFAULTS", "RHO_AIR", "SPECTRA", "WIND_TABLE", "Wind", "gust_series", "mean_speed", "npd_spectrum"]
@@ -120,9 +120,8 @@ class Wind:
 
     @classmethod
     def from_table(cls, t: dict, heading_deg: float) -> "Wind":
-        d = t["direction_deg"] if "direction_deg" in t else heading_deg + t.get("relative_direction_deg", 180.0)
-        return cls(speed=float(t["speed"]), direction_deg=float(d) % 360.0, spectrum=t.get("spectrum", "npd"),
-                   values=dict(t))
+        return cls(speed=float(t["speed"]), direction_deg=global_direction(t, heading_deg),
+                   spectrum=t.get("spectrum", "npd"), values=dict(t))
 
     def load(self, db) -> DragLoad:
         """The drag load on the vessel of ``db`` (its topsides mesh above the waterline; air density).
@@ -140,11 +139,10 @@ class Wind:
     def force_series(self, load: DragLoad, heading_deg: float, seed: int, dt: float, n_steps: int) -> np.ndarray:
         """The wind's generalised force (2 n_steps + 1, 6) at the half steps, in the vessel's start axes."""
         z = max(float(load.centroid[2]), 1.0)
-        U = mean_speed(self.speed, z)
-        u = U + (gust_series(self.speed, z, seed, dt, n_steps) if self.spectrum == "npd" and self.speed > 0 else 0.0)
-        a = math.radians(self.direction_deg - heading_deg)
-        F1 = load.body_load((math.cos(a), math.sin(a)))
-        return np.outer(np.asarray(u * np.abs(u)), F1) if np.ndim(u) else np.tile(F1 * U * U, (2 * n_steps + 1, 1))
+        u = np.full(2 * n_steps + 1, mean_speed(self.speed, z))
+        if self.spectrum == "npd" and self.speed > 0:
+            u += gust_series(self.speed, z, seed, dt, n_steps)
+        return np.outer(u * np.abs(u), self.unit_force(load, heading_deg))
 
     def unit_force(self, load: DragLoad, heading_deg: float) -> np.ndarray:
         """The load (6,) of a wind of 1 m/s from the mean direction, in the vessel's start axes: F_1."""

@@ -218,6 +218,9 @@ def flows(ctx: Context, heading: float) -> tuple[Current | None, Wind | None]:
         raw = ctx.raw(key)
         ctx.one_of(raw, f"{key}.", ("relative_direction_deg", "direction_deg"),
                    "the direction it moves towards: 180 onto the bow, 90 from starboard")
+        if not any(k in d for k in ("relative_direction_deg", "direction_deg")):
+            out.append(None)                   # the problem is recorded: nothing to build
+            continue
         if "table" in d and any(k in raw for k in ("c_x", "c_y", "c_n")):
             ctx.add(f"{key}.table", f"give either {key}.table or the amplitudes c_x, c_y, c_n, not both")
         t = d.get("table")
