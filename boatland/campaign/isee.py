@@ -91,6 +91,8 @@ __all__ = ["ISEE_FIELDS", "ISEE_KEY", "LevelModel", "SampleSpec", "access_incide
 
 #: First element of every sample's spawn key (keeps ISEE streams apart from the Monte Carlo seeds).
 ISEE_KEY = 0x15EE
+#: Last element of a sample's gust stream's spawn key (:func:`sample_gust_seed`; ASCII "GU").
+GUST_KEY = 0x4755
 #: Trial numbers: ((case × MAX_LEVELS) + level) × MAX_SAMPLES + sample.
 MAX_LEVELS, MAX_SAMPLES = 16, 100_000
 CONFIDENCE = 0.95
@@ -115,6 +117,16 @@ ISEE_FIELDS = (
 
 def trial_number(case: int, level: int, sample: int) -> int:
     return (case * MAX_LEVELS + level) * MAX_SAMPLES + sample
+
+
+def sample_gust_seed(scenario, ss: np.random.SeedSequence) -> int | None:
+    """The seed of a sample's wind gusts: a child stream of the sample's seed sequence ``ss``, so that every
+    sample meets its own gusts (the sampler draws the waves only; the gusts are plain Monte Carlo within it);
+    None without gusty wind — the scenario's seed then, which changes nothing."""
+    if scenario.wind is None or not scenario.wind.gusty:
+        return None
+    child = np.random.SeedSequence(ss.entropy, spawn_key=(*ss.spawn_key, GUST_KEY))
+    return int(child.generate_state(1, dtype=np.uint32)[0])
 
 
 def sample_seed(master_seed: int, case: int, level: int, sample: int, plain: bool = False) -> np.random.SeedSequence:
@@ -285,7 +297,8 @@ def execute_sample(source: str, spec: SampleSpec, loaders, plain: bool = False) 
                     check_radiation(setup, ctx["memory"][mkey])
                     ctx["checked"].add(spec.case)
                 try:
-                    result = simulate(sc, db, memory=ctx["memory"][mkey], waves=model.sea.with_u(u), setup=setup)
+                    result = simulate(sc, db, memory=ctx["memory"][mkey], waves=model.sea.with_u(u), setup=setup,
+                                      gust_seed=sample_gust_seed(sc, ss))
                 except BlowUpError as exc:
                     result = exc.result
             row.update(_sample_row(result, model.t_access, names))
@@ -718,6 +731,6 @@ def rerun_sample(campaign: Campaign, row, loaders, sinks=()):
             warnings.simplefilter("ignore")
             try:
                 return simulate(sc, setup.db, memory=setup.memory(), waves=model.sea.with_u(u), sinks=sinks,
-                                setup=setup)
+                                setup=setup, gust_seed=sample_gust_seed(sc, ss))
             except BlowUpError as exc:
                 return exc.result

@@ -123,6 +123,11 @@ class Wind:
         return cls(speed=float(t["speed"]), direction_deg=global_direction(t, heading_deg),
                    spectrum=t.get("spectrum", "npd"), values=dict(t))
 
+    @property
+    def gusty(self) -> bool:
+        """Whether the wind has gusts (a spectrum and a speed)."""
+        return self.spectrum != "none" and self.speed > 0
+
     def load(self, db) -> DragLoad:
         """The drag load on the vessel of ``db`` (its topsides mesh above the waterline; air density).
 
@@ -140,7 +145,7 @@ class Wind:
         """The wind's generalised force (2 n_steps + 1, 6) at the half steps, in the vessel's start axes."""
         z = max(float(load.centroid[2]), 1.0)
         u = np.full(2 * n_steps + 1, mean_speed(self.speed, z))
-        if self.spectrum == "npd" and self.speed > 0:
+        if self.gusty:
             u += gust_series(self.speed, z, seed, dt, n_steps)
         return np.outer(u * np.abs(u), self.unit_force(load, heading_deg))
 
@@ -152,7 +157,7 @@ class Wind:
     def gust_variance(self, load: DragLoad) -> float:
         """σ_u² [m²/s²] of the synthesised gusts at the centroid's height (the discrete sum of
         :func:`gust_series` for records up to an hour), 0 without gusts."""
-        if self.spectrum != "npd" or self.speed <= 0:
+        if not self.gusty:
             return 0.0
         z = max(float(load.centroid[2]), 1.0)
         fk = np.arange(1, int(F_MAX * GUST_RECORD) + 1) / GUST_RECORD
@@ -168,7 +173,7 @@ class Wind:
         r"""The one-sided spectrum [per rad/s] of :math:`g(t) = 2U(z_c)\,u(t)`, the gusts' force per unit
         F_1 linearised about the mean (:math:`S_g(\omega) = 4U^2 S(\omega/2\pi)/2\pi`, zero above
         :data:`F_MAX`); None without gusts."""
-        if self.spectrum != "npd" or self.speed <= 0:
+        if not self.gusty:
             return None
         z = max(float(load.centroid[2]), 1.0)
         U = mean_speed(self.speed, z)

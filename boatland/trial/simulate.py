@@ -138,7 +138,7 @@ def pile_table_request(setup: Setup):
 def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None = None,
              arrays: MotionArrays | None = None, progress: Callable[[int, int], None] | None = None,
              sinks: Sequence[TrialSink] = (), progress_every: float = 0.1, waves=None,
-             setup: Setup | None = None) -> Result:
+             setup: Setup | None = None, gust_seed: int | None = None) -> Result:
     r"""Run one landing trial.
 
     Equation of motion (DESIGN.md §1; Cummins 1962, San Nicolás Méndez 2024 eq. 3.40; contact: Ferreira González 2023 §2.5, §3.4):
@@ -175,6 +175,10 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
         sea's ramp, the monopile's scattered wave). Its ``digest()`` goes into the provenance.
     setup : Setup, optional
         ``Setup.of(scenario, db)``, when the caller has made it already.
+    gust_seed : int, optional
+        Seed of the wind's gusts (:func:`boatland.loads.wind.gust_series`) instead of the scenario's seed:
+        a rare-event sample, whose sea is not drawn from the scenario's seed, gives its own
+        (:func:`boatland.campaign.isee.sample_gust_seed`). Recorded in the provenance when given.
 
     Returns
     -------
@@ -216,7 +220,8 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
             F += drift_series(env.drift, db, waves.realise(scenario.simulation.seed, n * dt), dt=dt, n_steps=n,
                               x0=x0g, y0=y0g, heading_deg=float(np.degrees(psi)), ramp=r)
     if env.wind_load is not None:
-        F += env.wind.force_series(env.wind_load, env.heading_deg, scenario.simulation.seed, dt, n) \
+        F += env.wind.force_series(env.wind_load, env.heading_deg,
+                                   scenario.simulation.seed if gust_seed is None else gust_seed, dt, n) \
             * load_ramp(scenario, dt, n)[:, None]
     thrust = thrust_series(scenario, dt, n)
     Bv, Bq = setup.additional_damping()
@@ -232,7 +237,8 @@ def simulate(scenario: Scenario, db: HydroDB, *, memory: RadiationMemory | None 
             kwargs["current_ramp"] = np.sqrt(load_ramp(scenario, dt, n))
     provenance = {
         "boatland": __version__, "scenario": scenario.name, "scenario_sha256": scenario.digest(),
-        "database": db.name, "seed": scenario.simulation.seed, "dt": dt, "steps": n,
+        "database": db.name, "seed": scenario.simulation.seed,
+        **({} if gust_seed is None else {"gust_seed": gust_seed}), "dt": dt, "steps": n,
         "radiation": scenario.radiation.method, "memory": scenario.radiation.memory,
         "waves_from": wave_start(scenario), "wave_ramp": scenario.simulation.start_ramp if waves is not None else 0.0,
         "inputs": trial_inputs(scenario),

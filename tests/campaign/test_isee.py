@@ -219,3 +219,19 @@ max_samples = 12''' if method == "isee" else ""}
     page = (tmp_path / "rep" / "report.html").read_text(encoding="utf-8")
     table = (tmp_path / "rep" / ("isee_runs.md" if method == "isee" else "cases.md")).read_text(encoding="utf-8")
     assert name in table and html.escape(name) in page
+
+
+def test_every_sample_meets_its_own_gusts():
+    """A gusty wind in a rare-event campaign: each sample's gusts come from a child stream of its own seed
+    (different across samples, the same when drawn again); without gusts the scenario's seed stays."""
+    from boatland.campaign.isee import sample_gust_seed, sample_seed
+    from boatland.scenario.scenario import load_scenario
+
+    scenario = load_scenario(REPO / "scenarios" / "ctv_landing.toml")
+    gusty = scenario.replace({"wind.speed": 10.0, "wind.relative_direction_deg": 90.0})
+    steady = gusty.replace({"wind.spectrum": "none"})
+    seeds = [sample_gust_seed(gusty, sample_seed(17, 0, 0, k)) for k in range(50)]
+    assert len(set(seeds)) == 50 and seeds[3] == sample_gust_seed(gusty, sample_seed(17, 0, 0, 3))
+    assert sample_gust_seed(gusty, sample_seed(17, 0, 1, 3)) != seeds[3]
+    assert sample_gust_seed(steady, sample_seed(17, 0, 0, 3)) is None
+    assert sample_gust_seed(scenario, sample_seed(17, 0, 0, 3)) is None
