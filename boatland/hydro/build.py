@@ -20,11 +20,14 @@ Numerics, chosen deliberately
   square panels: face radius > λ/8); the vessel file may set it or the panel counts, and fewer than
   4 panels per wavelength is refused (:mod:`boatland.vessel.files`). The figure is recorded in the
   provenance notes.
-- **Lid** (irregular-frequency removal): a panel lid inside each demihull's waterplane, built here
-  rather than with ``generate_lid`` so that it is itself a symmetric quarter matching the hull
-  stations and covers the whole interior waterplane (Capytaine's generator keeps only the panels of
-  a rectangular grid that lie entirely inside the waterline of the quarter: for ctv24 it covered
-  83 % of the waterplane, leaving strips along the hull and at the symmetry plane). It sits at ``z = −min(0.05 T, d/2)``, where ``d`` is the deepest lid that still
+- **Lid** (irregular-frequency removal): Capytaine's lid generator (``generate_lid``) on the symmetric
+  part of the mesh, square panels of side b/n_lid (``mesh.n_lid`` of the vessel file). The generator keeps
+  only the panels that lie wholly inside the waterline, so the lid stops short of the hull (it covers
+  about 85 % of the waterplane). A lid that covers the whole waterplane and meets the hull — boatland's
+  own until 2026-12 — is wrong: with its edge on the hull panels the solution fails Haskind's relation by
+  up to 60 % above 1.5 rad/s and by 2–5 % in the landing band (ctv27: B33 at 2 rad/s 36.7 vs 22.1 kN s/m
+  with Capytaine's lid and 21.3 without a lid; ``tests/hydro/test_builtin.py`` holds the relation). It sits
+  at ``z = −min(0.05 T, d/2)``, where ``d`` is the deepest lid that still
   pushes the first irregular frequency of the lid-covered interior above ω_max (Capytaine's
   rectangular-box estimate, :meth:`AbstractMesh.lowest_lid_position`); not at ``z = 0``, where
   Capytaine would switch its Green-function singularity treatment with a warning.
@@ -71,8 +74,7 @@ from boatland.vessel.wigley import WigleyCatamaran
 from boatland.vessel.database import HydroDB, Provenance
 from boatland.vessel.files import VesselSpec, load_vessel
 
-__all__ = ["build_database", "build_from_file", "capytaine_body", "drift_body", "lid_depth", "mirror_directions",
-           "SOLVER"]
+__all__ = ["build_database", "build_from_file", "capytaine_body", "lid_depth", "mirror_directions", "SOLVER"]
 
 #: Capytaine's DOF names in boatland's DOF order (conventions.DOF_NAMES).
 CPT_DOFS = ("Surge", "Sway", "Heave", "Roll", "Pitch", "Yaw")
@@ -165,18 +167,17 @@ def _symmetric(cpt, vertices, faces, planes=("xOz", "yOz")):
     return mesh
 
 
-def _bem_panels(hull, counts, z_lid):
-    """(hull panels, lid panels or None, symmetry planes) of the part of ``hull`` the BEM meshes."""
+def _bem_panels(hull, counts):
+    """(hull panels, symmetry planes) of the part of ``hull`` the BEM meshes."""
     if isinstance(hull, CTVCatamaran):
-        lid = hull.lid_half_panels(counts, z_lid) if z_lid is not None else None
-        return hull.half_panels(counts), lid, ("xOz",)
-    lid = hull.lid_quarter_panels(counts.n_half_length, counts.n_lid, z_lid) if z_lid is not None else None
-    return hull.quarter_panels(counts.n_half_length, counts.n_girth), lid, ("xOz", "yOz")
+        return hull.half_panels(counts), ("xOz",)
+    return hull.quarter_panels(counts.n_half_length, counts.n_girth), ("xOz", "yOz")
 
 
 def capytaine_body(spec: VesselSpec):
     """The Capytaine floating body of ``spec``: the symmetric part of its mesh (Wigley: a quarter with
-    both symmetries; CTV: a half with port–starboard symmetry), the lid, 6 rigid DOFs.
+    both symmetries; CTV: a half with port–starboard symmetry), Capytaine's lid (square panels of side
+    b/n_lid, clear of the hull), 6 rigid DOFs.
 
     Returns
     -------
@@ -190,34 +191,15 @@ def capytaine_body(spec: VesselSpec):
     hull = spec.hull
     counts = spec.panel_counts()
     z_lid = -lid_depth(hull, spec.omega_max, spec.g) if spec.lid else None
-    (hv, hf), lid_panels, planes = _bem_panels(hull, counts, z_lid)
+    (hv, hf), planes = _bem_panels(hull, counts)
     with _quiet_capytaine():
         mesh = _symmetric(cpt, hv, hf, planes)
-        lid = _symmetric(cpt, *lid_panels, planes) if lid_panels is not None else None
+        # a square panel of side a has Capytaine's face radius a/√2
+        lid = (mesh.generate_lid(z=z_lid, faces_max_radius=hull.demihull_beam / counts.n_lid / math.sqrt(2.0))
+               if z_lid is not None else None)
         body = cpt.FloatingBody(mesh=mesh, lid_mesh=lid, dofs=cpt.rigid_body_dofs(rotation_center=(0.0, 0.0, 0.0)),
                                 center_of_mass=tuple(spec.cog), mass=spec.total_mass, name=spec.name)
     return body, counts, z_lid
-
-
-def drift_body(spec: VesselSpec):
-    """The body :func:`boatland.hydro.drift.add_drift` solves for ``spec``'s mean drift: the builder's
-    symmetric hull mesh (:func:`capytaine_body`) with Capytaine's own lid generator at the builder's lid
-    height instead of the builder's lid.
-
-    Capytaine's generator keeps only the lid panels that lie wholly inside the waterline (about 85 % of the
-    waterplane), a margin to the hull; the builder's lid covers the whole waterplane and touches the hull,
-    and the far field of that solution does not conserve energy: the optical theorem fails by 7–50 % of
-    the scattered energy for ctv27 at 1.2–3 rad/s (head seas), where the hull without a lid, or with
-    Capytaine's lid, balances to 0.1–3 % (:attr:`boatland.hydro.drift.FarFieldDrift.imbalance`). The mean
-    drift, a difference of large far-field terms, needs the balance.
-    """
-    import capytaine as cpt
-
-    body, _, z_lid = capytaine_body(spec)
-    with _quiet_capytaine():
-        lid = body.mesh.generate_lid(z=z_lid) if z_lid is not None else None
-        return cpt.FloatingBody(mesh=body.mesh, lid_mesh=lid, dofs=cpt.rigid_body_dofs(rotation_center=(0.0, 0.0, 0.0)),
-                                center_of_mass=tuple(spec.cog), mass=spec.total_mass, name=spec.name)
 
 
 def mirror_directions(X_half: np.ndarray, beta_half_deg: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -296,9 +278,7 @@ def build_database(spec: VesselSpec, *, progress: bool = True, drift: bool = Tru
         Also compute the far-field mean drift (surge, sway, yaw) of the free-floating vessel from the same
         solves (:mod:`boatland.hydro.drift`): the sources are kept and their Kochin functions evaluated,
         which adds a few per cent to the build time (noted in the provenance). False leaves ``drift`` None.
-        With the builder's lid, which touches the hull, the far field fails the energy check at some
-        frequencies (:func:`drift_body`; the figure is in the note): for a drift to trust, add it afterwards
-        with ``add_drift(db, body=drift_body(spec))``.
+        The far field's energy balance (optical theorem) is in the note.
 
     Returns
     -------
@@ -364,7 +344,8 @@ def build_database(spec: VesselSpec, *, progress: bool = True, drift: bool = Tru
     D = mirror_directions(D_half, beta_half)[0] if drift else None
 
     seconds = time.perf_counter() - t0
-    notes = _notes(spec, hull, counts, z_lid, omegas, B, C, volume, seconds) + notes
+    n_lid = int(body.lid_mesh.nb_faces) if body.lid_mesh is not None else 0
+    notes = _notes(spec, hull, counts, z_lid, n_lid, omegas, B, C, volume, seconds) + notes
     if drift:
         n_panels = int(body.mesh.nb_faces)
         notes.append(far_field_note(n_panels, z_lid is not None, extra="computed with the build from the same "
@@ -403,11 +384,10 @@ def _hull_text(hull) -> str:
             f"(C_b = {hull.block_coefficient:.4f})")
 
 
-def _notes(spec: VesselSpec, hull, counts, z_lid, omegas, B, C, volume, seconds) -> list[str]:
-    (_, hf), lid_panels, planes = _bem_panels(hull, counts, z_lid)
+def _notes(spec: VesselSpec, hull, counts, z_lid, n_lid, omegas, B, C, volume, seconds) -> list[str]:
+    (_, hf), planes = _bem_panels(hull, counts)
     k = 2 ** len(planes)
     n_hull = k * len(hf)
-    n_lid = k * len(lid_panels[1]) if lid_panels is not None else 0
     layout = (f"{counts.n_length} from transom to stem, {counts.n_girth} keel to waterline, "
               f"{counts.n_transom} across a transom" if isinstance(hull, CTVCatamaran) else
               f"{counts.n_half_length} per half-length, {counts.n_girth} keel to waterline")
@@ -416,7 +396,8 @@ def _notes(spec: VesselSpec, hull, counts, z_lid, omegas, B, C, volume, seconds)
         f"I_cog {tuple(float(f'{i:.6g}') for i in spec.inertia_cog)} kg m²",
         *spec.notes,
         f"mesh: {n_hull} hull panels ({layout}), "
-        + (f"{n_lid} lid panels at z = {z_lid:.4g} m (irregular frequencies removed: sharp features in A, B, X "
+        + (f"{n_lid} lid panels at z = {z_lid:.4g} m (Capytaine's lid generator, clear of the hull; irregular "
+           "frequencies removed: sharp features in A, B, X "
            "are the waves trapped between the demihulls, physical in potential flow)"
            if z_lid is not None else "no lid (irregular frequencies not removed)")
         + f"; {'quarter mesh with xOz and yOz' if k == 4 else 'half mesh with xOz'} symmetry; "

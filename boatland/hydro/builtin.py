@@ -5,18 +5,8 @@ All were made with :mod:`boatland.hydro.build` from the vessel files in ``scenar
 
     boatland hydro build scenarios/vessels/ctv27.toml -o boatland/data/ctv27.h5
 
-(which also computes the mean drift, :mod:`boatland.hydro.drift`). ``ctv27`` carries mean drift coefficients
-added to the built file without rebuilding it (every other dataset unchanged; about 12 min on 2 cores)::
-
-    from boatland.hydro.bemio import write_drift
-    from boatland.hydro.build import drift_body
-    from boatland.hydro.drift import add_drift
-    from boatland.vessel.files import load_vessel
-
-    db = add_drift(load_builtin("ctv27"), body=drift_body(load_vessel(vessel_file("ctv27"))))
-    write_drift(builtin_path("ctv27"), db)
-
-``ctv24`` and ``model2`` have none yet (the same two lines with their names add it).
+(which also computes the mean drift, :mod:`boatland.hydro.drift`, from the same solves; the build's time is in
+each database's provenance notes).
 """
 
 from __future__ import annotations

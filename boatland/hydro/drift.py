@@ -294,7 +294,8 @@ def capytaine_mesh_body(db: HydroDB, *, lid: bool = True):
 
     The mesh vertices are taken in the frame of the BEM input (as the builder stores them: reference point
     at the origin). No symmetry is used: a hull built by :mod:`boatland.hydro.build` is solved faster from
-    its vessel file (``add_drift(db, body=drift_body(spec))``, :func:`boatland.hydro.build.drift_body`).
+    its vessel file (``add_drift(db, body=capytaine_body(spec)[0])``, :func:`boatland.hydro.build.capytaine_body`),
+    and :func:`boatland.hydro.build.build_database` computes the drift with the build anyway.
 
     Raises
     ------
@@ -339,7 +340,7 @@ def add_drift(db: HydroDB, *, body=None, progress: bool = True) -> HydroDB:
         The database; needs ``M`` and, unless ``body`` is given, the hull ``mesh``.
     body : capytaine.FloatingBody, optional
         The body to solve, with six rigid DOFs about ``db.ref_point`` (for a built vessel
-        ``boatland.hydro.build.drift_body(spec)``: the builder's symmetric mesh with Capytaine's lid; its
+        ``boatland.hydro.build.capytaine_body(spec)[0]``: the builder's symmetric mesh and lid; its
         two half-size blocks cost about a quarter of the full mesh's LU). Default:
         :func:`capytaine_mesh_body` of ``db``.
     progress : bool

@@ -561,39 +561,6 @@ class CTVCatamaran:
         faces.append(np.stack([a, a + m + 1, a + m + 2, a + 1], axis=-1))
         return merge_vertices(np.concatenate(verts), np.concatenate(faces))
 
-    def lid_half_panels(self, counts: CTVPanelCounts, z_lid: float) -> tuple[np.ndarray, np.ndarray]:
-        """Lid panels inside the port demihull's waterplane at depth ``z_lid`` (< 0), normals down,
-        on the hull's stations; stations where the hull is shallower than the lid carry none."""
-        if not -self.draft < z_lid <= 0:
-            raise ValueError(f"z_lid must be in (-draft, 0], got {z_lid!r}")
-        xi = self.stations(counts.n_length)
-        d = self.keel_depth(xi)
-        wet = d > -z_lid
-        h = np.where(wet, d + z_lid, 0.0)
-        y = np.where(wet, self.section_half_breadth(xi, h), 0.0)
-        x = (xi - 0.5) * self.length
-        # the last wet station: where the keel rises through the lid (the lid closes there)
-        last = int(np.flatnonzero(wet)[-1])
-        if last + 1 < xi.size:
-            lo, hi = xi[last], xi[last + 1]
-            for _ in range(60):
-                mid = 0.5 * (lo + hi)
-                lo, hi = (mid, hi) if self.keel_depth(mid) > -z_lid else (lo, mid)
-            x = np.concatenate([x[:last + 1], [(lo - 0.5) * self.length]])
-            y = np.concatenate([y[:last + 1], [0.0]])
-        else:
-            x, y = x[:last + 1], y[:last + 1]
-        n = counts.n_lid
-        t = np.linspace(-1.0, 1.0, n + 1)
-        X = np.repeat(x[:, None], n + 1, axis=1)
-        Y = 0.5 * self.separation + y[:, None] * t[None, :]
-        verts = np.stack([X, Y, np.full_like(X, z_lid)], axis=-1).reshape(-1, 3)
-        i, j = np.meshgrid(np.arange(x.size - 1), np.arange(n), indexing="ij")
-        a = (i * (n + 1) + j).reshape(-1)
-        b = a + (n + 1)
-        faces = np.stack([a, a + 1, b + 1, b], axis=-1)   # +y × +x = −z (down)
-        return merge_vertices(verts, faces)
-
     def mesh(self, counts: CTVPanelCounts) -> HullMesh:
         """Full wetted hull (both demihulls, transoms included, no lid) as a :class:`HullMesh`."""
         v, f = self.half_panels(counts)

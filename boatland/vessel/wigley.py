@@ -287,28 +287,6 @@ class WigleyCatamaran:
             faces.append(np.stack(quad, axis=-1))
         return merge_vertices(np.concatenate(verts), np.concatenate(faces))
 
-    def lid_quarter_panels(self, n_half_length: int, n_lid: int, z_lid: float) -> tuple[np.ndarray, np.ndarray]:
-        """Lid panels inside the port demihull's forebody waterplane at depth ``z_lid`` (< 0).
-
-        The lid closes the interior free surface for irregular-frequency removal; it uses the hull's
-        stations so that its panels match the hull panels in size. Normals point down (into the
-        hull's interior, as Capytaine expects); bow-end panels are triangles.
-        """
-        if not -self.draft < z_lid <= 0:
-            raise ValueError(f"z_lid must be in (-draft, 0], got {z_lid!r}")
-        xs = self.stations(n_half_length)
-        eta = self.half_breadth(xs, z_lid)
-        t = np.linspace(-1.0, 1.0, n_lid + 1)
-        X = np.repeat(xs[:, None], n_lid + 1, axis=1)
-        Y = 0.5 * self.separation + eta[:, None] * t[None, :]
-        verts = np.stack([X, Y, np.full_like(X, z_lid)], axis=-1).reshape(-1, 3)
-        i, j = np.meshgrid(np.arange(n_half_length), np.arange(n_lid), indexing="ij")
-        a = (i * (n_lid + 1) + j).reshape(-1)
-        b = a + (n_lid + 1)
-        # a → a+1 runs along +y, a → b along +x: [a, a+1, b+1, b] has normal y × x = −z (down).
-        faces = np.stack([a, a + 1, b + 1, b], axis=-1)
-        return merge_vertices(verts, faces)
-
     def mesh(self, counts: PanelCounts) -> HullMesh:
         """Full wetted hull (both demihulls, both sides, no lid) as a :class:`HullMesh`."""
         v, f = self.quarter_panels(counts.n_half_length, counts.n_girth)

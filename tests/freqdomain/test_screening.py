@@ -35,7 +35,9 @@ def test_margins_are_the_slip_conditions_of_the_contact_forces(landing, shear):
     """Per contact c: H_down = J_v − μJ_n, H_up = −J_v − μJ_n, H_left = J_h − μJ_n, H_right = −J_h − μJ_n
     in its own axes (n, t_v = e_z, t_h = e_z × n) of contact_components; for n = −e_x, t_h = −e_y
     (starboard): a needed force to starboard means a slip to port (left). Grøtting 2015 eq. 3.25–3.28 /
-    3.76–3.79, for each contact rather than for their sum."""
+    3.76–3.79, for each contact rather than for their sum — each direction tilted onto the friction circle by
+    the static load across it (slip_directions): the side modes by the static vertical force V⁰, the
+    vertical modes by the (here vanishing) static side force H⁰."""
     db, s = landing
     if shear == "rigid":
         s = s.replace(shear_stiffness=np.inf)
@@ -43,20 +45,25 @@ def test_margins_are_the_slip_conditions_of_the_contact_forces(landing, shear):
     tr = slip_transfer(db, s, omega=w, beta_deg=[150.0])
     r = landed_response(db, s, w, [150.0])
     mu = s.mu
-    expected = []
+    expected, capacity = [], []
     for c in range(2):
         Jn, Jv, Jh = np.moveaxis(r.contact_components()[:, :, c], -1, 0)
-        expected += [Jv - mu * Jn, -Jv - mu * Jn, Jh - mu * Jn, -Jh - mu * Jn]
+        N0, V0, H0 = r.contact_components(static=True)[c]
+        assert np.isclose(N0, s.thrust / 2, rtol=1e-3) and V0 < 0 and abs(H0) < 1e-6 * N0
+        sv, sh = -H0 / (mu * N0), V0 / (mu * N0)       # across the vertical modes: −t_h; across the side: e_z
+        cv, ch = np.sqrt(1 - sv ** 2), np.sqrt(1 - sh ** 2)
+        along = [(cv * Jv - sv * Jh, cv * V0 - sv * H0), (-cv * Jv - sv * Jh, -cv * V0 - sv * H0),
+                 (ch * Jh + sh * Jv, ch * H0 + sh * V0), (-ch * Jh + sh * Jv, -ch * H0 + sh * V0)]
+        expected += [d - mu * Jn for d, _ in along]
+        # static capacities a_m = μN⁰ − d_mᵀJ⁰ (Grøtting 2015 eq. 3.72–3.75): the fender is above the thrust
+        # line, so the static vertical force F_zc on the vessel points down and lowers the capacity against
+        # upward slip; on the circle it lowers the side modes' too
+        capacity += [mu * N0 - d0 for _, d0 in along]
     expected = np.stack(expected + [r.x[..., 3]], axis=-1)
     np.testing.assert_allclose(tr.H, expected, rtol=1e-12, atol=1e-9)
     assert tr.names == ("down 0", "up 0", "left 0", "right 0", "down 1", "up 1", "left 1", "right 1", "roll")
-    # static capacities a_m = μN⁰ − d_mᵀJ⁰ (Grøtting 2015 eq. 3.72–3.75): the fender is above the thrust
-    # line, so the static vertical force F_zc on the vessel points down and lowers the capacity against
-    # upward slip
-    for c in range(2):
-        N0, V0, H0 = r.contact_components(static=True)[c]
-        assert np.isclose(N0, s.thrust / 2, rtol=1e-3) and V0 < 0 and abs(H0) < 1e-6 * N0
-        np.testing.assert_allclose(tr.capacity[4 * c:4 * c + 4], [mu * N0 - V0, mu * N0 + V0, mu * N0 + H0, mu * N0 - H0])
+    np.testing.assert_allclose(tr.capacity[:-1], capacity)
+    assert tr.capacity[2] < mu * s.thrust / 2 * (1 - 1e-3)      # the side modes lose to the vertical load
     assert tr.capacity[-1] == np.radians(s.roll_limit_deg)
     # roll is locked by the rigid stick, free on the rubber
     assert (np.abs(tr.H[..., -1]).max() < 1e-12) == (shear == "rigid")
@@ -211,3 +218,28 @@ def test_pile_wave_on_the_columns_the_directions_read_gives_the_same_excitation(
         changed = np.flatnonzero(np.any(part.X != db.X, axis=(0, 2)))
         assert 1 <= changed.size <= 2 * len(beta)                     # only the brackets' columns
         assert np.array_equal(excitation_force(part, w, beta), excitation_force(full, w, beta))
+
+
+def test_slip_directions_follow_the_friction_circle():
+    """boatland.freqdomain.screening.slip_directions: without a tangential static load the four modes are
+    ±e_z and ±s (Grøtting 2015 eq. 3.13–3.24); with a side load F_p across a mode its direction is the
+    circle's tangent where |J_t| = μN at that side load — so the mode's capacity is the exact distance to the
+    circle along it, and the margin is zero at the design point."""
+    from boatland.freqdomain.screening import slip_directions
+
+    n = np.array([1.0, 0.0, 0.0])                  # the contact's normal, landing → vessel
+    mu, N = 0.8, 100e3
+    plain = slip_directions(n)
+    assert np.array_equal(slip_directions(n, N * n, mu), plain)     # normal load only: exactly Grøtting's
+    s = plain[3]
+    F_p = 30e3
+    J0 = N * n + F_p * s                           # pushed on (n: landing → vessel), 30 kN sideways
+    d = slip_directions(n, J0, mu)
+    assert np.allclose(np.linalg.norm(d, axis=1), 1.0) and np.allclose(d @ n, 0.0)
+    assert np.array_equal(d[2:], plain[2:])        # the side modes: no vertical load across them
+    for m in (0, 1):                               # up and down: tilted towards the side load
+        v = np.sqrt((mu * N) ** 2 - F_p ** 2)
+        point = v * plain[m] + F_p * s             # where the circle is reached at that side load
+        assert np.linalg.norm(point) == pytest.approx(mu * N)
+        assert d[m] @ point == pytest.approx(mu * N)               # the tangent touches the circle there
+        assert mu * N - d[m] @ J0 < mu * N - plain[m] @ J0         # less capacity than the square's

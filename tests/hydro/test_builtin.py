@@ -12,6 +12,8 @@ from boatland.errors import BoatlandInputError
 from boatland.hydro.builtin import BUILTIN, builtin_path, load_builtin, vessel_file
 from boatland.vessel.files import load_vessel
 
+#: Haskind's relation (test_damping_and_excitation_agree_by_haskind): largest |B^H − B| / max |B| allowed.
+HASKIND_TOL = 0.025
 SYMMETRIC = (0, 2, 4)  # surge, heave, pitch: even under y → −y
 ANTISYMMETRIC = (1, 3, 5)  # sway, roll, yaw: odd
 
@@ -26,9 +28,9 @@ def test_names_and_paths():
     for name in BUILTIN:
         path = builtin_path(name)
         assert path.is_file() and path.suffix == ".h5"
-        # 125 ω × 72 β (5° steps), gzip: ctv24 and model2 2.45 MB each (2026-11-21), ctv27 2.55 MB (2026-12-01),
-        # 2.75 MB with its mean drift (2026-12-03)
-        assert path.stat().st_size < 4_000_000
+        # 72 β (5° steps), gzip, with the mean drift (2026-12-03): ctv27 (250 ω) 5.2 MB, ctv24 and model2
+        # (125 ω) 2.65 and 2.62 MB
+        assert path.stat().st_size < 6_000_000
         assert vessel_file(name).name == f"{name}.toml"
 
 
@@ -160,6 +162,39 @@ def test_shipped_file_rewrites_identically(db, tmp_path):
     assert back.provenance == db.provenance
 
 
+def haskind_ratio(db, dof):
+    r"""Haskind's damping over the database's damping, per frequency:
+    :math:`B_{jj}^H(\omega) = \frac{k}{8\pi\rho g c_g}\int_0^{2\pi}|X_j(\beta)|^2\,d\beta` (unit wave amplitude;
+    deep water :math:`\omega k / (4\pi\rho g^2)`), the energy a mode radiates as the waves it would diffract
+    (Newman 1962, "The exciting forces on fixed bodies in waves", J. Ship Res. 6(3); Newman 1977, *Marine
+    Hydrodynamics*, §6.18). The directions are a uniform circle: the trapezoid rule is the plain sum."""
+    w, g = db.omega, db.g
+    k = w ** 2 / g
+    c_g = g / (2.0 * w)                                   # the shipped databases are deep water
+    I = np.sum(np.abs(db.X[dof]) ** 2, axis=0) * (2.0 * np.pi / db.n_dir)
+    return k / (8.0 * np.pi * db.rho * g * c_g) * I / db.B[dof, dof]
+
+
+@pytest.mark.parametrize("dof", [1, 2, 4])
+def test_damping_and_excitation_agree_by_haskind(db, dof):
+    """B from the radiation solves and X from the diffraction solves are one body's: Haskind's damping differs
+    from the database's by at most 2.5 % of the mode's peak damping (sway, heave, pitch) wherever the mesh has
+    at least 10 panels per wavelength (ctv27: up to 3.8 rad/s; the landing band is far below).
+
+    Measured (2026-12-03, the lid of Capytaine's generator): ctv27 0.9 / 1.1 / 1.3 %, ctv24 2.1 / 1.3 / 1.6 %,
+    model2 1.4 / 0.9 / 1.2 % (sway / heave / pitch) — B^H is 1.5–2.5 % below B through the band, the mesh's
+    own error. With the lid that met the hull (the databases before 2026-12-03): ctv27 273 / 16 / 18 %,
+    ctv24 16 / 6.9 / 6.0 %."""
+    assert np.isinf(db.water_depth)
+    spec = load_vessel(vessel_file(db.name))
+    panels_per_wavelength = spec.panels_per_wavelength() * (db.omega[-1] / db.omega) ** 2
+    fine = panels_per_wavelength >= 10.0
+    assert fine.sum() > 0.5 * db.n_freq
+    B = db.B[dof, dof]
+    error = np.abs(haskind_ratio(db, dof) * B - B) / np.abs(B).max()
+    assert error[fine].max() < HASKIND_TOL, (db.name, dof, error[fine].max(), db.omega[fine][np.argmax(error[fine])])
+
+
 def test_ctv27_passes_the_builders_checks():
     """The default vessel (transom stern, hard chine; scenarios/vessels/ctv27.toml): the mesh displaces the
     vessel's mass within 1 %, C33 is ρ g A_wp of the lines within 1 % and C35 = −ρ g ∫x dA (the waterplane
@@ -170,15 +205,17 @@ def test_ctv27_passes_the_builders_checks():
     box estimate √(π g q / tanh(π q T)), q = √(L⁻² + b⁻²)) is 3.45 rad/s — close to the first resonance of
     the waves trapped in the tunnel between the demihulls, ω_n = √(g n π / s) with s the tunnel's width at
     the waterline (n = 1: 3.12 rad/s, n = 2: 4.41 rad/s). They differ in whom they touch: an irregular
-    frequency is a property of the interior problem and spoils every radiation mode at once, surge and
-    heave included; the n = 1 tunnel wave is antisymmetric across the centreline (sway, roll, yaw) and
-    n = 2 symmetric (pitch). So: no sharp peak in surge or heave damping at all, and the sharp peaks of sway
-    and pitch sit at the tunnel resonances within 2 % (one frequency step, Δω = 0.04 rad/s, is 1.3 %).
+    frequency is a property of the interior problem and spoils every radiation mode at once, surge
+    included; the n = 1 tunnel wave is antisymmetric across the centreline (sway, roll, yaw) and n = 2
+    symmetric (heave, pitch). So: no sharp peak in surge damping at all, none within 5 % of the irregular
+    frequency, and every sharp peak at the tunnel resonance of its symmetry within 6 % (the tunnel is
+    wider towards the ends; one frequency step, Δω = 0.04 rad/s, is 1.3 %).
 
-    Measured (2026-12-01, 2624 hull + 1092 lid panels, 2017 s): ρ∇ − m = −0.02 %, C33 −0.007 % of
-    ρ g A_wp, C35 +0.002 %, A33(0) 354 t, A33(∞) 124 t; sharp peaks: sway 3.12, pitch 4.40, yaw 2.92 and
-    3.32 rad/s (the tunnel's n = 1 wave with its variation along the tunnel), none in surge, heave, roll;
-    shipped file 2.55 MB.
+    Measured (2026-12-03, 2624 hull + 608 lid panels of Capytaine's generator, 250 frequencies): ρ∇ − m =
+    −0.02 %, C33 −0.01 % of ρ g A_wp, A33(0) and A33(∞) positive; sharp peaks: heave and pitch 4.40 rad/s
+    (n = 2), none elsewhere — sway's and roll's n = 1 peaks near 3.1 rad/s are resolved over several of
+    the 0.02-rad/s steps (at 0.04 rad/s they showed as spikes at 2.96 and 3.20); shipped file 5.2 MB. (The
+    lid that met the hull, before 2026-12-03, hid the heave peak and moved yaw's.)
     """
     from boatland.irf.impulse import find_spikes
     from boatland.vessel.ctv_hull import CTVCatamaran
@@ -197,22 +234,24 @@ def test_ctv27_passes_the_builders_checks():
     w_irr = math.sqrt(math.pi * db.g * q / math.tanh(math.pi * q * hull.draft))
     assert db.omega[0] < w_irr < db.omega[-1]                   # the check means something: inside the band
     peaks = {i: db.omega[find_spikes(db.B[i, i])] for i in range(6)}
-    assert peaks[0].size == 0 and peaks[2].size == 0, peaks   # surge, heave: no irregular frequency
+    assert peaks[0].size == 0, peaks                            # surge: no irregular frequency
     tunnel = hull.separation - hull.demihull_beam
-    for i, n in ((1, 1), (4, 2)):                               # sway: n = 1, pitch: n = 2 tunnel wave
+    for modes, n in (((1, 3, 5), 1), ((2, 4), 2)):               # antisymmetric: n = 1, symmetric: n = 2
         w_n = math.sqrt(db.g * n * math.pi / tunnel)
-        assert peaks[i].size and np.all(np.abs(peaks[i] - w_n) <= 0.02 * w_n), (i, peaks[i], w_n)
+        for i in modes:
+            assert np.all(np.abs(peaks[i] - w_n) <= 0.06 * w_n), (i, peaks[i], w_n)
+            assert np.all(np.abs(peaks[i] - w_irr) > 0.05 * w_irr), (i, peaks[i], w_irr)
+    assert peaks[2].size and peaks[4].size                      # heave and pitch do show their tunnel wave
     assert db.topsides is not None and db.topsides.vertices[:, 2].max() > 2.0
     assert db.mesh.vertices[:, 2].max() <= 1e-9
 
 
-def test_ctv27_carries_its_mean_drift():
-    """ctv27's far-field mean drift (added with boatland.hydro.drift.add_drift, see boatland/hydro/builtin.py):
+def test_every_shipped_vessel_carries_its_mean_drift(db):
+    """The far-field mean drift computed with the build (boatland.hydro.drift):
     surge, sway, yaw; port–starboard mirrored; down-wave in head, following and beam seas (to 0.1 % of the
     largest value: at long waves the drift is tens of N/m² against 40 kN/m², inside the energy check)."""
-    db = load_builtin("ctv27")
     D = db.drift
-    assert D.shape == (6, 72, 125) and np.all(np.isfinite(D)) and np.all(D[[2, 3, 4]] == 0)
+    assert D.shape == (6, 72, db.n_freq) and np.all(np.isfinite(D)) and np.all(D[[2, 3, 4]] == 0)
     b = db.wave_dir_deg
     for j in np.flatnonzero(b > 180.0):
         m = int(np.flatnonzero(np.isclose(b, 360.0 - b[j]))[0])
@@ -222,5 +261,4 @@ def test_ctv27_carries_its_mean_drift():
     assert D[0, head].max() < 1e-3 * big and D[0, follow].min() > -1e-3 * big and D[1, beam].min() > -1e-3 * big
     assert D[0, head].min() < -0.2 * np.abs(D[0]).max()                  # it does push the bow off
     notes = [n for n in db.provenance.notes if n.startswith("mean drift:")]
-    assert any("far-field" in n and "energy check" in n for n in notes) and any("drift_body" in n for n in notes)
-    assert load_builtin("ctv24").drift is None and load_builtin("model2").drift is None
+    assert any("far-field" in n and "energy check" in n and "computed with the build" in n for n in notes)

@@ -119,16 +119,6 @@ def test_quarter_and_mirrors():
     assert {tuple(np.round(p, 9)) for p in mirrored} == {tuple(np.round(p, 9)) for p in full.vertices}
 
 
-def test_lid_covers_the_waterplane_and_faces_down():
-    z_lid = -0.07
-    v, f = CTV.lid_quarter_panels(20, 6, z_lid)
-    n, area, _ = panel_normals_areas(v, f)
-    assert np.allclose(n[:, 2], -1.0)
-    shrink = 1 - (abs(z_lid) / CTV.draft) ** CTV.p  # waterplane at z_lid is narrower
-    assert 4 * area.sum() == pytest.approx(CTV.waterplane_area * shrink, rel=2e-3)
-    assert np.any(f[:, 2] == f[:, 3])  # bow panels are triangles, repeated last vertex
-
-
 def test_panel_counts_respect_the_size():
     for h in (0.3, 0.5, 1.0):
         counts = CTV.panel_counts(h)
