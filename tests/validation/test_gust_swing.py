@@ -3,8 +3,8 @@ domain. ctv27 on its landing (scenarios/ctv_landing.toml, no waves) in a 10 m/s 
 (DNV-RP-C205 §2.3.2.11): the gusts excite the landed sway–yaw mode about the bow (~0.118 rad/s, 53 s), damped
 by the hull's drag in still water (quadratic, linearised statistically in the frequency domain).
 
-Measured (2026-12-03): sway σ 0.291 m over 24 seeded 30-min trials (0.234–0.328 m per trial), the screening's
-0.299 m (+3 %); the same resonance frequency. Checked: within 8 % (the trials' mean variance over 24 × ~34 swing
+Measured (2026-12-03, the rebuilt ctv27): sway σ 0.292 m over 24 seeded 30-min trials, the screening's 0.299 m
+(+2.4 %; on the database before 0.291 m); each tube's normal force σ 15.9 kN; the same resonance frequency. Checked: within 8 % (the trials' mean variance over 24 × ~34 swing
 periods has a standard error of ~6 % in σ)."""
 
 import math

@@ -13,21 +13,22 @@ preload as the time domain; margins correlated at ρ ≥ 0.99 counted once —
 where the time domain's P lies in 0.1–0.9, the screening's P lies inside the Clopper–Pearson 95 %
 interval of the 24 trials.
 
-Measured (2026-12-01, master seed 2026) — P_TD [95 % interval] vs P_screening (Rayleigh; Rice):
+Measured (2026-12-03 on the rebuilt ctv24, master seed 2026) — P_TD [95 % interval] vs P_screening (Rice;
+Rayleigh's beside it in `boatland validate --case screening-vs-monte-carlo`):
 
-=======  =======  ====================  ==========  =========
-heading  Hs [m]   time domain           Rayleigh    Rice
-=======  =======  ====================  ==========  =========
-180°     0.23     11/24 [0.26, 0.67]    0.394       0.445
-180°     0.26     21/24 [0.68, 0.97]    0.858       0.899
-135°     0.125    12/24 [0.29, 0.71]    0.418       0.525
-135°     0.13     18/24 [0.53, 0.90]    0.578       0.695
-90°      0.09     5/24  [0.07, 0.42]    0.199       0.346
-90°      0.10     19/24 [0.58, 0.93]    0.613       0.837
-=======  =======  ====================  ==========  =========
+=======  =======  ====================  =========
+heading  Hs [m]   time domain           Rice
+=======  =======  ====================  =========
+180°     0.23     11/24 [0.26, 0.67]    0.435
+180°     0.26     21/24 [0.68, 0.97]    0.893
+135°     0.125    11/24 [0.26, 0.67]    0.508
+135°     0.13     17/24 [0.49, 0.87]    0.678
+90°      0.09     6/24  [0.10, 0.47]    0.333
+90°      0.10     19/24 [0.58, 0.93]    0.826
+=======  =======  ====================  =========
 
 Counting the two symmetric contacts of head seas as independent events (the plain union) would put the
-screening at 0.633 and 0.980 in head seas — outside the second interval: identical margins are one
+screening at 0.633 and 0.980 in head seas (measured 2026-12-01) — outside the second interval: identical margins are one
 event. Summing the two contacts' forces instead (the hinge of Grøtting 2015) cancels the roll couple of
 oblique seas and gave P = 0.000 at 90° and 135° where the time domain slips (issue 13).
 
