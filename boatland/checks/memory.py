@@ -71,18 +71,26 @@ def check_memory(setup: Setup, memory: RadiationMemory) -> MemoryCheck:
     what = ("state-space fit" if rad.method == "state_space" else
             f"convolution over {rad.memory:g} s" + (", tapered" if rad.taper != "none" else ", not tapered"))
     where = "landed" if law is not None else "free-floating"
+    if rad.method == "state_space":
+        # each DOF pair's fit is passive, but a mode that couples pairs (sway–yaw) can still project to a
+        # slightly negative damping where the true one is ~0 (a slow landed mode): its sign follows the memory
+        advice = ("the fit of each DOF pair is passive, but this coupled mode's damping is ~0 and its sign follows "
+                  "radiation.memory: try another memory length (scenario check shows ζ_rad), or add linear damping")
+    else:
+        advice = ("use radiation.method = \"state_space\" (passive by construction) or a tapered convolution "
+                  "(radiation.taper = \"cosine\")")
     for k in range(w.size):
         mode = f"the {where} {names[k]} mode (T = {2 * math.pi / w[k]:.3g} s)"
         zeta_mem, zeta_tot = b_mem[k] / (2 * w[k]), (b_mem[k] + b_other[k]) / (2 * w[k])
         if b_mem[k] < 0 and b_mem[k] + b_other[k] < 0:
             problems.append(("radiation.method", f"the radiation memory ({what}) has negative damping in {mode}: "
                              f"ζ = {100 * zeta_mem:.3g} %, {100 * zeta_tot:.3g} % with the fender's and additional "
-                             "damping, so that mode grows; use radiation.method = \"state_space\" (passive by "
-                             "construction) or a tapered convolution (radiation.taper = \"cosine\")"))
+                             f"damping, so that mode grows; {advice}"))
         elif b_mem[k] < 0:
             warns.append(("radiation.method", f"the radiation memory ({what}) has slightly negative damping in "
                           f"{mode}: ζ = {100 * zeta_mem:.2g} % (the fender's damping keeps it stable: "
-                          f"{100 * zeta_tot:.2g} % in all); radiation.method = \"state_space\" is passive"))
+                          f"{100 * zeta_tot:.2g} % in all)"
+                          + ("" if rad.method == "state_space" else "; radiation.method = \"state_space\" is passive")))
     if not problems:
         notes.append(f"radiation memory ({what}) damps every {where} mode in the band: "
                      + ", ".join(f"{n} {2 * math.pi / x:.3g} s ζ_rad {100 * b / (2 * x):.2g} %"

@@ -21,6 +21,19 @@ COMMANDS = ("run", "replay", "plot", "campaign", "report", "scenario", "hydro", 
             "operability", "validate")
 
 
+def _one_line_warning(message, category, filename, lineno, file=None, line=None):
+    """boatland's own warnings (a scenario's, a database's) as one line on stderr, ``warning: …`` — not Python's
+    file, line and source; everyone else's as Python prints them."""
+    import warnings
+
+    from boatland.errors import BoatlandWarning
+
+    if issubclass(category, BoatlandWarning):
+        print(f"warning: {message}", file=file or sys.stderr)
+    else:
+        sys.stderr.write(warnings.formatwarning(message, category, filename, lineno, line))
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run the command line; returns the exit status.
 
@@ -39,6 +52,7 @@ def main(argv: list[str] | None = None) -> int:
 
     # numba says this while compiling the kernel's gate (a sleep in object mode, by design): not for users
     warnings.filterwarnings("ignore", message="Code running in object mode won't allow parallel execution")
+    warnings.showwarning = _one_line_warning
     if not hasattr(args, "func"):
         parser.print_usage(sys.stderr)
         _error("no command given; start with 'boatland run', or see 'boatland --help'")
