@@ -12,8 +12,8 @@ Time domain: four wave seeds × 1800 s of full sea (after the settling and the w
 σ of roll, of each contact's vertical force and of heave pooled over the four records — the sampling
 error of one 1800 s record is a few per cent (measured: ratios 0.98–1.02 between seeds). Frequency domain:
 :func:`boatland.freqdomain.screening.landed_response` with the same contacts, pile diffraction and
-spectrum, σ² = ∫|H|²S dω. Measured σ_TD/σ_FD: roll 0.999 (σ_roll 0.052°), vertical forces 0.999 / 0.999,
-heave 0.998.
+spectrum, σ² = ∫|H|²S dω. Measured σ_TD/σ_FD (2026-12-03, the rebuilt ctv24): roll 1.001 (σ_roll 0.052°),
+vertical forces 1.001 / 1.000, heave 0.997.
 
 Grøtting, H. (2015), MSc thesis, NTNU; Ferreira González, D. (2023), Dr.-Ing. dissertation, TU Hamburg.
 """
