@@ -25,8 +25,9 @@ Numerics, chosen deliberately
   only the panels that lie wholly inside the waterline, so the lid stops short of the hull (it covers
   about 85 % of the waterplane). A lid that covers the whole waterplane and meets the hull — boatland's
   own until 2026-12 — is wrong: with its edge on the hull panels the solution fails Haskind's relation by
-  up to 60 % above 1.5 rad/s and by 2–5 % in the landing band (ctv27: B33 at 2 rad/s 36.7 vs 22.1 kN s/m
-  with Capytaine's lid and 21.3 without a lid; ``tests/hydro/test_builtin.py`` holds the relation). It sits
+  up to 16 % of the peak heave damping and 273 % of sway's, 2–5 % in the landing band (ctv27: B33 at 2 rad/s
+  36.7 vs 21.6 kN s/m with Capytaine's lid and 21.3 without a lid; ``tests/hydro/test_builtin.py`` holds the
+  relation). It sits
   at ``z = −min(0.05 T, d/2)``, where ``d`` is the deepest lid that still
   pushes the first irregular frequency of the lid-covered interior above ω_max (Capytaine's
   rectangular-box estimate, :meth:`AbstractMesh.lowest_lid_position`); not at ``z = 0``, where
@@ -344,8 +345,7 @@ def build_database(spec: VesselSpec, *, progress: bool = True, drift: bool = Tru
     D = mirror_directions(D_half, beta_half)[0] if drift else None
 
     seconds = time.perf_counter() - t0
-    n_lid = int(body.lid_mesh.nb_faces) if body.lid_mesh is not None else 0
-    notes = _notes(spec, hull, counts, z_lid, n_lid, omegas, B, C, volume, seconds) + notes
+    notes = _notes(spec, hull, counts, body, z_lid, omegas, B, C, volume, seconds) + notes
     if drift:
         n_panels = int(body.mesh.nb_faces)
         notes.append(far_field_note(n_panels, z_lid is not None, extra="computed with the build from the same "
@@ -384,10 +384,10 @@ def _hull_text(hull) -> str:
             f"(C_b = {hull.block_coefficient:.4f})")
 
 
-def _notes(spec: VesselSpec, hull, counts, z_lid, n_lid, omegas, B, C, volume, seconds) -> list[str]:
-    (_, hf), planes = _bem_panels(hull, counts)
-    k = 2 ** len(planes)
-    n_hull = k * len(hf)
+def _notes(spec: VesselSpec, hull, counts, body, z_lid, omegas, B, C, volume, seconds) -> list[str]:
+    n_hull = int(body.mesh.nb_faces)            # the whole mesh's panels (the symmetric parts mirrored)
+    n_lid = int(body.lid_mesh.nb_faces) if body.lid_mesh is not None else 0
+    quarter = not isinstance(hull, CTVCatamaran)
     layout = (f"{counts.n_length} from transom to stem, {counts.n_girth} keel to waterline, "
               f"{counts.n_transom} across a transom" if isinstance(hull, CTVCatamaran) else
               f"{counts.n_half_length} per half-length, {counts.n_girth} keel to waterline")
@@ -400,7 +400,7 @@ def _notes(spec: VesselSpec, hull, counts, z_lid, n_lid, omegas, B, C, volume, s
            "frequencies removed: sharp features in A, B, X "
            "are the waves trapped between the demihulls, physical in potential flow)"
            if z_lid is not None else "no lid (irregular frequencies not removed)")
-        + f"; {'quarter mesh with xOz and yOz' if k == 4 else 'half mesh with xOz'} symmetry; "
+        + f"; {'quarter mesh with xOz and yOz' if quarter else 'half mesh with xOz'} symmetry; "
         f"{spec.panels_per_wavelength():.1f} panels per shortest "
         f"wavelength ({spec.shortest_wavelength:.3g} m at {spec.omega_max:g} rad/s)",
         f"frequencies: {omegas.size} from {omegas[0]:.4g} to {omegas[-1]:.4g} rad/s"
