@@ -133,8 +133,11 @@ def cmd(args) -> int:
                            "relative_direction_deg": (p.direction_deg - scenario.vessel.heading_deg) % 360}
                           for p in parts],
                 "p_access": own.p_access, "p_cycle": own.p_cycle, "cycle_period": own.cycle_period,
-                "margins": {m: {"sigma": float(sg), "capacity": float(c)}
-                            for m, sg, c in zip(own.names[:-1], own.sigma, own.capacity[:-1])}}
+                "margins": {m: {"sigma": float(sg), "capacity": float(c),
+                                **({} if own.tails is None else {"skewness": float(t[0]),
+                                                                 "excess_kurtosis": float(t[1])})}
+                            for m, sg, c, t in zip(own.names[:-1], own.sigma, own.capacity[:-1],
+                                                   own.tails if own.tails is not None else own.sigma)}}
         print_json(out)
     else:
         print(f"{scenario.name}: limiting Hs [m] of a slip onset (or roll beyond {setup.roll_limit_deg:g}°) at the "
@@ -151,6 +154,12 @@ def cmd(args) -> int:
                   f"({r.p_cycle:.3g} per {r.cycle_period:g} s cycle); "
                   "σ of the margins " + ", ".join(f"{m} {s / 1e3:.3g} kN" for m, s in zip(r.names[:-1], r.sigma))
                   + "; capacities " + ", ".join(f"{a / 1e3:.3g} kN" for a in r.capacity[:-1]))
+            if r.tails is not None:
+                g = int(np.argmax(r.per_mode[:-1]))
+                print(f"the current's drag skews the margins (second order in the waves; the slip rates count it): "
+                      f"the governing {r.names[g]} by "
+                      + (f"{r.tails[g, 0]:+.3f}" if abs(r.tails[g, 0]) >= 5e-4 else "less than 0.001")
+                      + " (boatland.freqdomain.quadratic_drag)")
         if table.captured.min() < 0.99:
             print(f"note: the database's band holds {100 * table.captured.min():.1f} % of the wave variance at "
                   f"Tp = {table.Tp[np.argmin(table.captured)]:g} s (the rest is left out)")

@@ -63,10 +63,11 @@ import numpy as np
 
 from boatland.errors import BoatlandInputError
 from boatland.freqdomain.landing import LandingSetup
+from boatland.freqdomain.quadratic_drag import QuadraticDrag
 from boatland.freqdomain.statistics import (SlowSwing, ACCEPT_PRESETS, ACCESS_DURATION, DEFAULT_STATISTICS, HS_MAX, MODES, STATISTICS, LimitTable,
                                             accept_probability, correlation_matrix, distinct_events,
                                             incident_probability, limiting_hs, response_correlation,
-                                            spectral_moments)
+                                            spectral_moments, unit_spectra)
 from boatland.scenario.schema import SHEAR_DAMPING_RATIO_DEFAULT, SHEAR_STIFFNESS_DEFAULT
 from boatland.sea.spectra import SpectrumPart
 from boatland.vessel.database import HydroDB
@@ -104,6 +105,8 @@ class SlipTransfer:
         (:func:`gust_moments`); None without.
     motions : ndarray of complex, shape (Nw, Nβ, 6), or None
         The landed vessel's motions per unit wave amplitude (for the hull drag's linearisation).
+    directions : ndarray, shape (Np, 4, 3), or None
+        Each contact's rows :math:`d_{m,c} - \mu n_c` that make its margins of its force.
     """
 
     omega: np.ndarray
@@ -117,6 +120,24 @@ class SlipTransfer:
     setup: LandingSetup
     background: SlowSwing | None = None
     motions: np.ndarray | None = None
+    directions: np.ndarray | None = None
+
+    def drag_tails(self, db: HydroDB, weights, sigma=None, *, together: bool = False) -> np.ndarray | None:
+        r"""Skewness and excess kurtosis (K, Nβ, R, 2) of the responses from the hull drag's second-order part
+        (:class:`boatland.freqdomain.quadratic_drag.QuadraticDrag`) in K seas of variance weights ``weights``
+        (K, Nβ, Nw) = S(ω) dω per relative direction, each direction a sea of its own — or, ``together``, the
+        directions one short-crested sea (K, 1, R, 2); ``sigma`` the strips' velocity σ the drag is linearised
+        at. None without a current's cross-flow drag, or for the "wu" hinge."""
+        if self.method == "wu" or self.directions is None:
+            return None
+        qd = QuadraticDrag.of(db, self.setup, self.omega, self.directions, sigma=sigma)
+        if qd is None:
+            return None
+        W = np.asarray(weights, dtype=float)
+        if together:
+            return np.stack([qd.tails(Wk, self.H, self.motions)[None] for Wk in W])
+        return np.stack([np.stack([qd.tails(Wk[b:b + 1], self.H[:, b:b + 1], self.motions[:, b:b + 1])
+                                   for b in range(self.beta_deg.size)]) for Wk in W])
 
 
 def slip_directions(n: np.ndarray, J0: np.ndarray | None = None, mu: float = 0.0) -> np.ndarray:
@@ -199,11 +220,12 @@ def slip_transfer(db: HydroDB, setup: LandingSetup, *, omega=None, beta_deg=None
     r = landed_response(db, setup, w, b, method)
     n_p = setup.n_points
     J0 = (-setup.thrust / n_p * np.tile([1.0, 0.0, 0.0], (n_p, 1))) if method == "wu" else r.J_static
-    H, cap, names = [], [], []
+    H, cap, names, rows = [], [], [], []
     for c in range(n_p):
         n = setup.normals[c]
         Dc = slip_directions(n, J0[c], setup.mu) if method != "wu" else slip_directions(n)
-        H.append(r.J[:, :, c] @ (Dc - setup.mu * n).T)                    # (Nw, Nβ, 4)
+        rows.append(Dc - setup.mu * n)
+        H.append(r.J[:, :, c] @ rows[-1].T)                               # (Nw, Nβ, 4)
         cap.append(setup.mu * float(n @ J0[c]) - Dc @ J0[c])
         names += [f"{m} {c}" for m in MODES]
     H = np.concatenate(H + [r.x[..., 3:4]], axis=-1)
@@ -213,7 +235,7 @@ def slip_transfer(db: HydroDB, setup: LandingSetup, *, omega=None, beta_deg=None
         background = SlowSwing(gust_moments(db, setup, J0), setup.steady.linear_share)
     return SlipTransfer(omega=w, beta_deg=b, H=H, capacity=cap, names=tuple(names + ["roll"]), J_static=J0,
                         N_static=np.einsum("pk,pk->p", setup.normals, J0), method=method, setup=setup,
-                        background=background, motions=r.x)
+                        background=background, motions=r.x, directions=np.stack(rows))
 
 
 def gust_moments(db: HydroDB, setup: LandingSetup, J0: np.ndarray) -> np.ndarray:
@@ -274,9 +296,11 @@ def screening_grid(db: HydroDB, setup: LandingSetup, Tp, beta_deg=None, *, accep
     h = db.water_depth if water_depth is None else water_depth
     m, captured = spectral_moments(tr, Tp, sea=sea, water_depth=h, g=db.g)
     keep = distinct_events(m[..., 0], tr.capacity, response_correlation(tr, Tp, sea=sea, water_depth=h, g=db.g))
+    S, wt = unit_spectra(tr.omega, Tp, sea=sea, water_depth=h, g=db.g)
+    tails = tr.drag_tails(db, np.broadcast_to((S * wt)[:, None, :], (S.shape[0], tr.beta_deg.size, wt.size)))
     return limiting_hs(m, tr.capacity, Tp, tr.beta_deg, accept=accept, statistics=statistics,
                        access_duration=access_duration, method=method, captured=captured, names=tr.names,
-                       keep=keep, background=tr.background)
+                       keep=keep, background=tr.background, tails=tails)
 
 
 # --------------------------------------------------------------------------------------- one given sea
@@ -303,6 +327,9 @@ class SeaResponse:
         Vanmarcke); 0 for a response that is not an event of its own.
     access_duration : float
         [s].
+    tails : ndarray, shape (R, 2), or None
+        Skewness and excess kurtosis of each response from the hull drag's second-order part in a current
+        (:class:`boatland.freqdomain.quadratic_drag.QuadraticDrag`; they enter ``per_mode``); None without one.
     """
 
     sigma: np.ndarray
@@ -316,6 +343,7 @@ class SeaResponse:
     method: str
     per_mode: np.ndarray | None = None
     access_duration: float = ACCESS_DURATION
+    tails: np.ndarray | None = None
 
     def p_slip(self) -> float:
         """Probability of a slip onset (any contact, any mode) per access, roll left out."""
@@ -400,17 +428,23 @@ def sea_response(db: HydroDB, setup: LandingSetup, parts, *, water_depth: float 
             sig = setup.strip_sigma(w, (S * wt[None, :]).T, tr.motions)
             tr = slip_transfer(db, setup.with_drag_linearised(db, wave_sigma=sig), omega=omega, beta_deg=beta,
                                method=method)
+    tails = None
+    if method != "wu" and setup.drag_linearisable:
+        # the drag's square: the margins' skewness (boatland.freqdomain.quadratic_drag)
+        tails = tr.drag_tails(db, (S * wt[None, :])[None], sigma=sig, together=True)
     m = np.einsum("bw,w,wbr,wk->rk", S, wt, np.abs(tr.H) ** 2, w[:, None] ** np.arange(3)[None, :])
     cov = np.einsum("bw,w,wbi,wbj->ij", S, wt, tr.H, tr.H.conj()).real
     keep = distinct_events(m[None, None, :, 0], tr.capacity, correlation_matrix(cov)[None, None])
     Tc = parts[int(np.argmax([p.Hs for p in parts]))].Tp
     pc, pa, per_mode = incident_probability(1.0, m[None, None], tr.capacity, [Tc], statistics=statistics,
-                                            access_duration=access_duration, keep=keep, background=tr.background)
+                                            access_duration=access_duration, keep=keep, background=tr.background,
+                                            tails=tails)
     if tr.background is not None:
         m = m + tr.background.moments   # the gusts: independent of the waves, their variances add
     return SeaResponse(sigma=np.sqrt(m[:, 0]), m=m, capacity=tr.capacity, names=tr.names, p_cycle=float(pc[0, 0]),
                        p_access=float(pa[0, 0]), cycle_period=float(Tc), statistics=statistics, method=method,
-                       per_mode=np.asarray(per_mode[0, 0], dtype=float), access_duration=float(access_duration))
+                       per_mode=np.asarray(per_mode[0, 0], dtype=float), access_duration=float(access_duration),
+                       tails=None if tails is None else tails[0, 0])
 
 
 #: Shear stiffnesses of :func:`shear_sweep` as multiples of the scenario's (and the rigid stick, ``inf``).

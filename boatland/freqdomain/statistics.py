@@ -43,9 +43,9 @@ from boatland.errors import BoatlandInputError
 from boatland.sea.spectra import SpectrumPart
 
 __all__ = ["ACCEPT_PRESETS", "DEFAULT_STATISTICS", "ACCEPT_SOURCES", "access_text", "one_in", "probability_text", "risk_in_words", "ACCESS_DURATION", "HS_MAX", "LimitTable", "MODES", "SAME_EVENT", "STATISTICS",
-           "accept_probability", "correlation_matrix", "distinct_events", "incident_probability", "limiting_hs", "rayleigh_exceedance",
+           "accept_probability", "correlation_matrix", "distinct_events", "hermite_level", "incident_probability", "limiting_hs", "rayleigh_exceedance",
            "response_correlation", "response_names", "rice_rate", "slow_amplitude_weights", "slow_fast_rate", "SlowSwing",
-           "spectral_moments", "vanmarcke_rate"]
+           "spectral_moments", "unit_spectra", "vanmarcke_rate"]
 
 
 #: Slip modes, in the order of the margin arrays (then roll as the 5th response).
@@ -158,6 +158,23 @@ def _part(sea) -> SpectrumPart:
     return SpectrumPart(Hs=1.0, Tp=10.0) if sea is None else sea
 
 
+def unit_spectra(omega, Tp, *, sea: SpectrumPart | None = None, water_depth: float = math.inf,
+                 g: float = 9.81) -> tuple[np.ndarray, np.ndarray]:
+    """The spectra (NT, Nw) of ``sea``'s shape (default JONSWAP γ 3.3) at Hs = 1 m and each peak period ``Tp``
+    on the frequencies ``omega``, and the frequencies' trapezoid weights (Nw,)."""
+    part = _part(sea)
+    T = np.atleast_1d(np.asarray(Tp, dtype=float))
+    if np.any(~np.isfinite(T)) or np.any(T <= 0):
+        raise BoatlandInputError(f"peak periods must be > 0 s, got {T}")
+    w = np.asarray(omega, dtype=float)
+    S = np.stack([dataclasses.replace(part, Hs=1.0, Tp=float(t)).spectrum(w, water_depth, g) for t in T])
+    wt = np.zeros_like(w)
+    dw = np.diff(w)
+    wt[:-1] += dw / 2
+    wt[1:] += dw / 2
+    return S, wt
+
+
 def spectral_moments(transfer, Tp, *, sea: SpectrumPart | None = None,
                      water_depth: float = math.inf, g: float = 9.81) -> tuple[np.ndarray, np.ndarray]:
     r"""Spectral moments :math:`m_k = \int \omega^k |H|^2 S\,d\omega`, k = 0, 1, 2, for Hs = 1 m.
@@ -181,16 +198,8 @@ def spectral_moments(transfer, Tp, *, sea: SpectrumPart | None = None,
     captured : ndarray, shape (NT,)
         Share of the wave variance m₀ inside the frequency grid (the rest is left out).
     """
-    part = _part(sea)
-    T = np.atleast_1d(np.asarray(Tp, dtype=float))
-    if np.any(~np.isfinite(T)) or np.any(T <= 0):
-        raise BoatlandInputError(f"peak periods must be > 0 s, got {T}")
     w = transfer.omega
-    S = np.stack([dataclasses.replace(part, Hs=1.0, Tp=float(t)).spectrum(w, water_depth, g) for t in T])
-    wt = np.zeros_like(w)                                   # trapezoid weights
-    dw = np.diff(w)
-    wt[:-1] += dw / 2
-    wt[1:] += dw / 2
+    S, wt = unit_spectra(w, Tp, sea=sea, water_depth=water_depth, g=g)
     H2 = np.abs(transfer.H) ** 2                            # (Nw, Nβ, R)
     powers = w[:, None] ** np.arange(3)[None, :]            # (Nw, 3)
     m = np.einsum("tw,w,wbr,wk->tbrk", S, wt, H2, powers, optimize=True)
@@ -205,21 +214,13 @@ SAME_EVENT = 0.99
 def response_correlation(transfer, Tp, *, sea: SpectrumPart | None = None,
                          water_depth: float = math.inf, g: float = 9.81) -> np.ndarray:
     r"""Correlation coefficients of the responses (margins, roll) in each sea:
-    :math:`
-ho_{ij} = \int \mathrm{Re}(H_i ar H_j) S\,d\omega / (\sigma_i\sigma_j)`.
+    :math:`\rho_{ij} = \int \mathrm{Re}(H_i \bar H_j) S\,d\omega / (\sigma_i\sigma_j)`.
 
     Returns
     -------
     ndarray, shape (NT, Nβ, R, R)
     """
-    part = _part(sea)
-    T = np.atleast_1d(np.asarray(Tp, dtype=float))
-    w = transfer.omega
-    S = np.stack([dataclasses.replace(part, Hs=1.0, Tp=float(t)).spectrum(w, water_depth, g) for t in T])
-    wt = np.zeros_like(w)
-    dw = np.diff(w)
-    wt[:-1] += dw / 2
-    wt[1:] += dw / 2
+    S, wt = unit_spectra(transfer.omega, Tp, sea=sea, water_depth=water_depth, g=g)
     H = transfer.H                                           # (Nw, Nβ, R)
     cov = np.einsum("tw,w,wbi,wbj->tbij", S, wt, H, H.conj(), optimize=True).real
     return correlation_matrix(cov)
@@ -290,6 +291,37 @@ def rice_rate(a, m0, m2) -> np.ndarray:
     return np.where(m0 > 0, np.where(a <= 0, nu0, nu), 0.0)
 
 
+def hermite_level(r, skew, exkurt) -> np.ndarray:
+    r"""The level of a standard Gaussian crossed as often as a non-Gaussian process with skewness ``skew``
+    and excess kurtosis ``exkurt`` crosses ``r`` standard deviations above its mean (upper tail).
+
+    Winterstein's Hermite model (Winterstein, S. R. (1988), *Nonlinear vibration models for extremes and
+    fatigue*, J. Eng. Mech. 114(10), 1772–1790): the process is a monotone transform of a standard Gaussian U,
+
+    .. math:: \frac{X - \bar X}{\sigma} = \kappa\left[U + h_3(U^2 - 1) + h_4(U^3 - 3U)\right], \quad
+              h_4 = \frac{\sqrt{1 + 1.5\,\gamma_4} - 1}{18}, \quad h_3 = \frac{\gamma_3}{6(1 + 6h_4)}, \quad
+              \kappa = (1 + 2h_3^2 + 6h_4^2)^{-1/2}
+
+    (γ₃ the skewness, γ₄ ≥ 0 the excess kurtosis; a γ₄ < 0 is taken as 0, the model's softening branch not
+    being needed for the quadratic responses it serves), so the crossings of r by X are those of u = g⁻¹(r) by
+    U, Rice's rate :math:`\nu_0 e^{-u^2/2}`. Solved by Newton's method on the model's monotone branch
+    (:math:`u > -(1 + 6h_4)/(2h_3)` … the turning points); where the branch ends below r (a skewness beyond the
+    model), the turning point. With γ₃ = γ₄ = 0, u = r exactly.
+    """
+    r, g3, g4 = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (r, skew, exkurt)))
+    g4 = np.maximum(g4, 0.0)
+    h4 = (np.sqrt(1.0 + 1.5 * g4) - 1.0) / 18.0
+    h3 = g3 / (6.0 * (1.0 + 6.0 * h4))
+    kap = 1.0 / np.sqrt(1.0 + 2.0 * h3 * h3 + 6.0 * h4 * h4)
+    x = r / kap
+    u = np.array(r, dtype=float, copy=True)
+    for _ in range(40):
+        f = u + h3 * (u * u - 1.0) + h4 * (u ** 3 - 3.0 * u) - x
+        d = 1.0 + 2.0 * h3 * u + 3.0 * h4 * (u * u - 1.0)
+        u = np.where(d > 1e-3, u - f / np.where(d > 1e-3, d, 1.0), u)
+    return np.where((g3 == 0.0) & (g4 == 0.0), r, u)
+
+
 @dataclass(frozen=True, eq=False)
 class SlowSwing:
     r"""The part of every response that does not grow with the waves: the landed vessel's slow swing in the
@@ -320,9 +352,8 @@ def slow_amplitude_weights(edges, linear_share: float) -> np.ndarray:
     averaging: an approximate method of solving random vibration problems*, Int. J. Non-Linear Mech. 21(2)
     111–134; the energy-equivalent damping of :math:`k|\dot x|\dot x` at amplitude A is :math:`8k\omega A/3\pi`):
 
-    .. math:: p(u) \propto u\,\exp\!\left(-\lambdarac{u^2}{2} - \kappa(1-\lambda)\,u^3
-ight), \qquad
-              \kappa = rac{8/9\pi}{\sqrt{8/\pi}} = 0.177
+    .. math:: p(u) \propto u\,\exp\!\left(-\lambda\frac{u^2}{2} - \kappa(1-\lambda)\,u^3\right), \qquad
+              \kappa = \frac{8/9\pi}{\sqrt{8/\pi}} = 0.177
 
     with λ the linear share of the Gaussian equivalent damping (λ = 1: Rayleigh). Measured on ctv27 in a
     10 m/s beam wind (time domain, 12 × 30 min): the swing's excess kurtosis −0.36, this law's −0.35 at the
@@ -352,13 +383,9 @@ def slow_fast_rate(a, m0f, m2f, m0s, m2s, duration: float, sides=1.0, linear_sha
     amplitudes A and the waves' crossings are Poisson given it, at the rate of the level a − x(t):
 
     .. math::
-        P(	ext{no passage in } T) = \left(E_A\!\left[\exp\Big(-\int_0^{T_s}
-            
-u_fig(a - A\cos	frac{2\pi t}{T_s}ig)\,dt\Big)
-ight]
-ight)^{T/T_s},
-        \qquad 
-u_f(b) = 	frac{1}{2\pi}\sqrt{m_{2f}/m_{0f}}\;e^{-b^2/2m_{0f}}
+        P(\text{no passage in } T) = \left(E_A\!\left[\exp\Big(-\int_0^{T_s}
+            \nu_f\big(a - A\cos\tfrac{2\pi t}{T_s}\big)\,dt\Big)\right]\right)^{T/T_s},
+        \qquad \nu_f(b) = \tfrac{1}{2\pi}\sqrt{m_{2f}/m_{0f}}\;e^{-b^2/2m_{0f}}
 
     times, for each cycle, the probability :math:`\Phi((a - A)/\sqrt{m_{0f}})` that the swing's crest plus the
     waves there stays below a (two-sided, ``sides`` = 2: also the level −a); returned as :math:`-\ln P/T`. The
@@ -431,7 +458,7 @@ def vanmarcke_rate(a, m0, m1, m2, two_sided: bool = False) -> np.ndarray:
 
 def incident_probability(Hs, m: np.ndarray, capacity: np.ndarray, Tp, *, statistics: str = DEFAULT_STATISTICS,
                          access_duration: float = ACCESS_DURATION, keep=None,
-                         background=None) -> tuple[np.ndarray, np.ndarray]:
+                         background=None, tails=None) -> tuple[np.ndarray, np.ndarray]:
     r"""Probability of an incident (any slip mode or roll) per wave cycle and per access.
 
     ``"rayleigh"`` — Grøtting 2015 eq. 3.80 per cycle of Tp, :math:`P_{cyc} = 1-\prod_i(1-e^{-a_i^2/2\sigma_i^2})`;
@@ -457,6 +484,13 @@ def incident_probability(Hs, m: np.ndarray, capacity: np.ndarray, Tp, *, statist
         The part that does not scale with Hs (the landed vessel's swing in the wind's gusts,
         :attr:`boatland.freqdomain.screening.SlipTransfer.background`): for ``"rice"`` a slow swing under the
         waves (:func:`slow_fast_rate`), for the other statistics its moments added to ``m`` Hs².
+    tails : ndarray, shape (NT, Nβ, R, 2), optional
+        Skewness and excess kurtosis of each response at Hs = 1 m (the hull drag's second-order part,
+        :class:`boatland.freqdomain.quadratic_drag.QuadraticDrag`; second order, so they grow as Hs and Hs²):
+        each capacity a is replaced by the level a Gaussian response reaches as often,
+        :math:`\sigma\,u(a/\sigma)` with σ the waves' part (:func:`hermite_level`) — exact for Rice's rate,
+        the same mapping for the others. Roll (last) keeps its own: its two barriers' changes cancel to first
+        order.
 
     Returns
     -------
@@ -472,6 +506,15 @@ def incident_probability(Hs, m: np.ndarray, capacity: np.ndarray, Tp, *, statist
     T = np.asarray(Tp, dtype=float)[:, None]
     bg = np.zeros(3) if background is None else np.asarray(background.moments, dtype=float)
     m0 = m[..., 0] * Hs ** 2
+    if tails is not None:
+        t = np.asarray(tails, dtype=float)
+        sd = np.sqrt(m0)
+        cap = np.broadcast_to(capacity, m0.shape)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            eq = sd * hermite_level(cap / np.where(sd > 0, sd, 1.0), t[..., 0] * Hs, t[..., 1] * Hs ** 2)
+        use = (sd > 0) & (cap > 0)
+        use[..., -1] = False
+        capacity = np.where(use, eq, cap)
     if background is not None:
         m0 = m0 + bg[..., 0]
     on = 1.0 if keep is None else np.asarray(keep, dtype=float)
@@ -493,8 +536,9 @@ def incident_probability(Hs, m: np.ndarray, capacity: np.ndarray, Tp, *, statist
             nu = slow_fast_rate(capacity, m[..., 0] * Hs ** 2, m[..., 2] * Hs ** 2, bg[..., 0], bg[..., 2],
                                 access_duration, sides, background.linear_share)
     else:
-        nu = np.concatenate([vanmarcke_rate(capacity[:-1], m0[..., :-1], m1[..., :-1], m2[..., :-1]),
-                             vanmarcke_rate(capacity[-1:], m0[..., -1:], m1[..., -1:], m2[..., -1:], two_sided=True)],
+        nu = np.concatenate([vanmarcke_rate(capacity[..., :-1], m0[..., :-1], m1[..., :-1], m2[..., :-1]),
+                             vanmarcke_rate(capacity[..., -1:], m0[..., -1:], m1[..., -1:], m2[..., -1:],
+                                            two_sided=True)],
                             axis=-1)
     nu = nu * on
     total = nu.sum(axis=-1)
@@ -541,7 +585,7 @@ class LimitTable:
 
 def limiting_hs(m: np.ndarray, capacity: np.ndarray, Tp, beta_deg, *, accept=ACCEPT_PRESETS["best"],
                 statistics: str = DEFAULT_STATISTICS, access_duration: float = ACCESS_DURATION, method: str = "improved",
-                captured=None, names=None, keep=None, background=None) -> LimitTable:
+                captured=None, names=None, keep=None, background=None, tails=None) -> LimitTable:
     r"""Limiting Hs per (Tp, β): the largest Hs whose incident probability is accepted.
 
     ``"rayleigh"``: :math:`P_{inc}(H_s) \le P_{facc}\,T_p/t_{acc}` (Grøtting 2015 eq. 3.38–3.40, 3.80);
@@ -560,6 +604,8 @@ def limiting_hs(m: np.ndarray, capacity: np.ndarray, Tp, beta_deg, *, accept=ACC
     background : SlowSwing, optional
         The part independent of Hs (gusts: :func:`incident_probability`); the probability still grows with Hs,
         so the bisection holds.
+    tails : ndarray, shape (NT, Nβ, R, 2), optional
+        The responses' skewness and excess kurtosis at Hs = 1 m (:func:`incident_probability`).
 
     Returns
     -------
@@ -574,7 +620,7 @@ def limiting_hs(m: np.ndarray, capacity: np.ndarray, Tp, beta_deg, *, accept=ACC
 
     def excess(h):
         pc, pa, _ = incident_probability(h, m, capacity, T, statistics=statistics, access_duration=access_duration,
-                                         keep=keep, background=background)
+                                         keep=keep, background=background, tails=tails)
         return (pc if statistics == "rayleigh" else pa) - target
 
     lo = np.full(m.shape[:2], math.log(1e-3))
@@ -589,7 +635,7 @@ def limiting_hs(m: np.ndarray, capacity: np.ndarray, Tp, beta_deg, *, accept=ACC
     Hs = np.where(never, np.inf, np.where(always, 0.0, np.exp(lo)))
     _, _, per = incident_probability(np.where(np.isfinite(Hs) & (Hs > 0), Hs, 1.0), m, capacity, T,
                                      statistics=statistics, access_duration=access_duration, keep=keep,
-                                     background=background)
+                                     background=background, tails=tails)
     names = np.array(response_names(capacity.shape[-1]) if names is None else names)
     governing = names[np.argmax(per, axis=-1)]
     cap = np.ones(T.size) if captured is None else np.asarray(captured)

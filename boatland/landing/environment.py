@@ -212,6 +212,35 @@ class Environment:
         G[:, 1, 1], G[:, 1, 3], G[:, 1, 5] = 1.0, -st[:, 1], st[:, 0]
         return G
 
+    def strip_coefficients(self) -> np.ndarray:
+        r"""(n, 2): each strip's :math:`k_{a,i} = \tfrac12\rho A_a c_a s_i` of the cross-flow drag
+        :math:`k\,w|w|` along the hull (a = x) and across it (a = y), :class:`~boatland.loads.drag.DragLoad`."""
+        c = self.current
+        return np.stack([0.5 * c.rho * c.area_x * c.coefficients[0] * c.strips[:, 2],
+                         0.5 * c.rho * c.area_y * c.coefficients[1] * c.strips[:, 2]], axis=1)
+
+    def drag_quadratic(self, sigma) -> np.ndarray:
+        r"""The cross-flow drag's second-order coefficients (n, 2) when each strip's relative velocity is
+        Gaussian about the current's with standard deviations ``sigma`` (n, 2) [m/s]: the drag
+        :math:`f(w) = k\,w|w|` expanded in Hermite polynomials of the fluctuation :math:`u = w - \mu`,
+
+        .. math:: f(w) \approx E f + E f'\,u + \tfrac12 E f''\,(u^2 - \sigma^2), \qquad
+                  \tfrac12 E f'' = k\,(2\Phi(\mu/\sigma) - 1)
+
+        — the equivalent statistical quadratization of Spanos, P. D. & Donley, M. G. (1991), *Equivalent
+        statistical quadratization for nonlinear systems*, J. Eng. Mech. 117(6), 1289–1310, whose linear term
+        is :meth:`drag_damping`'s :math:`2kE|w|` and whose mean is :meth:`drag_mean_shift`'s. In a current
+        stronger than the motions (μ ≫ σ) the coefficient is k sgn μ and the expansion is the drag itself,
+        :math:`k(\mu - v)^2`; across a flow at rest (μ = 0) it is 0 (the drag is odd there). σ = 0 gives k sgn μ.
+        """
+        from scipy.special import ndtr
+
+        mu = np.broadcast_to(self.current_velocity[:2], (self.strip_maps().shape[0], 2))
+        sig = np.asarray(sigma, dtype=float)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            c2 = np.where(sig > 0, 2.0 * ndtr(mu / np.where(sig > 0, sig, 1.0)) - 1.0, np.sign(mu))
+        return self.strip_coefficients() * c2
+
     def drag_damping(self, sigma) -> np.ndarray:
         r"""The cross-flow drag's equivalent linear damping (6, 6) when each strip's relative velocity is
         Gaussian about the current's, with standard deviations ``sigma`` (n, 2) [m/s] (longitudinal,
@@ -221,11 +250,9 @@ class Environment:
         :class:`~boatland.loads.drag.DragLoad` "crossflow" form; σ = 0 gives the derivative at the mean flow."""
         from scipy.special import erf
 
-        c = self.current
         G = self.strip_maps()
         mu = np.abs(self.current_velocity[:2])                  # body = local at rest
-        k = np.stack([0.5 * c.rho * c.area_x * c.coefficients[0] * c.strips[:, 2],
-                      0.5 * c.rho * c.area_y * c.coefficients[1] * c.strips[:, 2]], axis=1)   # (n, 2)
+        k = self.strip_coefficients()
         sig = np.asarray(sigma, dtype=float)
         with np.errstate(divide="ignore", invalid="ignore"):
             Ew = np.where(sig > 0, sig * np.sqrt(2 / np.pi) * np.exp(-0.5 * (mu / np.where(sig > 0, sig, 1.0)) ** 2)
@@ -240,11 +267,9 @@ class Environment:
         (for a strong current by :math:`k\sigma^2`), unequally along the hull."""
         from scipy.stats import norm
 
-        c = self.current
         G = self.strip_maps()
         mu = np.broadcast_to(self.current_velocity[:2], (G.shape[0], 2))     # body = local at rest, signed
-        k = np.stack([0.5 * c.rho * c.area_x * c.coefficients[0] * c.strips[:, 2],
-                      0.5 * c.rho * c.area_y * c.coefficients[1] * c.strips[:, 2]], axis=1)
+        k = self.strip_coefficients()
         sig = np.asarray(sigma, dtype=float)
         safe = np.where(sig > 0, sig, 1.0)
         r = mu / safe
