@@ -98,7 +98,7 @@ from llvmlite import ir
 from numba import njit, types
 from numba.core.extending import intrinsic
 
-from boatland.rigid import add_point_force
+from boatland.rigid import add_point_force, angular_velocity, euler_moment
 
 __all__ = ["Contacts", "contact_set", "no_contacts", "stribeck", "contact_workspace", "contact_states",
            "contact_forces", "decide_modes", "contact_state_arrays", "accumulate_sliding", "OPEN", "STICK", "SLIP", "OFF",
@@ -327,14 +327,15 @@ def _point_kinematics(R, x, v, C, c, cs, kin):
         past_end = False
     off[c] = past_end or qz < C.ZB[c] or qz > C.ZT[c]
     rx, ry, rz = qx - x[0], qy - x[1], qz - x[2]
-    wx, wy, wz = v[3], v[4], v[5]
+    wx, wy, wz, bx_, by_, bz_ = angular_velocity(R, v)
     Vx = v[0] + wy * rz - wz * ry
     Vy = v[1] + wz * rx - wx * rz
     Vz = v[2] + wx * ry - wy * rx
     kx, ky, kz = wy * rz - wz * ry, wz * rx - wx * rz, wx * ry - wy * rx
-    ax_ = wy * kz - wz * ky
-    ay_ = wz * kx - wx * kz
-    az_ = wx * ky - wy * kx
+    # the point's acceleration beyond the angles' own: ω × (ω × r) and the Euler axes' turning × r
+    ax_ = wy * kz - wz * ky + by_ * rz - bz_ * ry
+    ay_ = wz * kx - wx * kz + bz_ * rx - bx_ * rz
+    az_ = wx * ky - wy * kx + bx_ * ry - by_ * rx
     tx, ty = -ny, nx                   # t_h = e_z × n
     r[c, 0], r[c, 1], r[c, 2] = rx, ry, rz
     nrm[c, 0], nrm[c, 1], nrm[c, 2] = nx, ny, 0.0
@@ -410,10 +411,10 @@ def _shear_trial(C, c, kin):
 
 
 @njit(cache=True, _nrt=False, forceinline=True)
-def _add_tangential(r, th, c, fv, fh, sideways, F):
-    add_point_force(r[c, 0], r[c, 1], r[c, 2], 0.0, 0.0, 1.0, fv, F)
+def _add_tangential(R, r, th, c, fv, fh, sideways, F):
+    add_point_force(R, r[c, 0], r[c, 1], r[c, 2], 0.0, 0.0, 1.0, fv, F)
     if sideways:
-        add_point_force(r[c, 0], r[c, 1], r[c, 2], th[c, 0], th[c, 1], th[c, 2], fh, F)
+        add_point_force(R, r[c, 0], r[c, 1], r[c, 2], th[c, 0], th[c, 1], th[c, 2], fh, F)
 
 
 @njit(cache=True, _nrt=False, forceinline=True)
@@ -536,7 +537,7 @@ def _rigid_slip_direction(c, u, fdir, sideways, v_tol):
 
 
 @njit(cache=True, _nrt=False, forceinline=True)
-def contact_forces(dt, C, cs, Mt_inv, kin, solve, F, acc, f_t, f_n, v_tol):
+def contact_forces(dt, C, cs, R, Mt_inv, kin, solve, F, acc, f_t, f_n, v_tol):
     r"""Add the contact forces to ``F`` and solve the accelerations ``acc`` at one RK4 stage.
 
     Parameters
@@ -548,6 +549,9 @@ def contact_forces(dt, C, cs, Mt_inv, kin, solve, F, acc, f_t, f_n, v_tol):
     cs : tuple
         Contact state (:func:`contact_state_arrays`): the modes decided for this step, slip directions
         and anchors.
+    R : (3, 3)
+        The body rotation at the stage: the contact forces' moments act about its Euler axes
+        (:func:`boatland.rigid.add_point_force`).
     Mt_inv : (6, 6)
         (M + A∞)⁻¹.
     kin, solve : tuple
@@ -577,7 +581,7 @@ def contact_forces(dt, C, cs, Mt_inv, kin, solve, F, acc, f_t, f_n, v_tol):
         fn = _normal_force(C, c, kin)
         f_n[c] = fn
         if fn > 0.0:
-            add_point_force(r[c, 0], r[c, 1], r[c, 2], nrm[c, 0], nrm[c, 1], nrm[c, 2], fn, F)
+            add_point_force(R, r[c, 0], r[c, 1], r[c, 2], nrm[c, 0], nrm[c, 1], nrm[c, 2], fn, F)
         if fn <= 0.0 or mode[c] == OPEN or mode[c] == OFF:
             continue
         mu = C.MU[c]
@@ -592,7 +596,7 @@ def contact_forces(dt, C, cs, Mt_inv, kin, solve, F, acc, f_t, f_n, v_tol):
             if mag > cap:
                 fv, fh = fv * cap / mag, fh * cap / mag
             f_t[c, 0], f_t[c, 1] = fv, fh
-            _add_tangential(r, th, c, fv, fh, sideways, F)
+            _add_tangential(R, r, th, c, fv, fh, sideways, F)
             continue
         if mode[c] == SLIP:
             sp = _speed(u[c, 0], u[c, 1], sideways)
@@ -600,7 +604,7 @@ def contact_forces(dt, C, cs, Mt_inv, kin, solve, F, acc, f_t, f_n, v_tol):
             dv, dh = _rigid_slip_direction(c, u, fdir, sideways, v_tol)
             fv, fh = cap * dv, cap * dh
             f_t[c, 0], f_t[c, 1] = fv, fh
-            _add_tangential(r, th, c, fv, fh, sideways, F)
+            _add_tangential(R, r, th, c, fv, fh, sideways, F)
             continue
         # rigid and stuck: one or two constraint columns
         idx[c] = m
@@ -611,9 +615,7 @@ def contact_forces(dt, C, cs, Mt_inv, kin, solve, F, acc, f_t, f_n, v_tol):
             else:
                 t0, t1, t2 = th[c, 0], th[c, 1], th[c, 2]
             G[0, m], G[1, m], G[2, m] = t0, t1, t2
-            G[3, m] = ry * t2 - rz * t1
-            G[4, m] = rz * t0 - rx * t2
-            G[5, m] = rx * t1 - ry * t0
+            G[3, m], G[4, m], G[5, m] = euler_moment(R, ry * t2 - rz * t1, rz * t0 - rx * t2, rx * t1 - ry * t0)
             target[m] = -u[c, k] / dt - e[c, k] / (dt * dt) - cen[c, k]
             m += 1
     for d in range(6):
@@ -751,7 +753,7 @@ def decide_modes(dt, C, cs, R, x, Mt_inv, kin, solve, F_try, F, acc, f_t, f_n, n
     for _ in range(nc):
         for d in range(6):
             F_try[d] = F[d]
-        contact_forces(dt, C, cs, Mt_inv, kin, solve, F_try, acc, f_t, f_n, v_tol)
+        contact_forces(dt, C, cs, R, Mt_inv, kin, solve, F_try, acc, f_t, f_n, v_tol)
         worst, excess, scale = -1, 0.0, 0.0
         for c in range(nc):
             if mode[c] != STICK or math.isfinite(C.KT[c]):

@@ -75,11 +75,11 @@ class CurrentSweep:
         """The direction in words, "either side" when its port–starboard mirror is as good (within 0.1 %)."""
         d = float(self.directions_deg[j])
         mirror = np.flatnonzero(np.isclose(self.directions_deg, (360.0 - d) % 360.0))
-        words = f"{side_words(d)} ({d:g}°)"
         if mirror.size and int(mirror[0]) != j and np.isclose(self.Hs[i, mirror[0]], self.Hs[i, j], rtol=1e-3):
-            words = words.replace(" from starboard", "").replace(" from port", "") + f" or {(360.0 - d) % 360.0:g}° " \
-                                                                                         "(either side)"
-        return words
+            d, m = sorted((d, (360.0 - d) % 360.0))       # a tie within round-off: the smaller angle first
+            words = f"{side_words(d)} ({d:g}°)"
+            return words.replace(" from starboard", "").replace(" from port", "") + f" or {m:g}° (either side)"
+        return f"{side_words(d)} ({d:g}°)"
 
     def as_dict(self) -> dict:
         fin = lambda a: [[None if not np.isfinite(v) else float(v) for v in row] for row in a]  # noqa: E731

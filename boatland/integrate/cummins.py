@@ -81,7 +81,7 @@ def _thrust(R, T, r_p, e_T, out):
     d0 = R[0, 0] * e_T[0] + R[0, 1] * e_T[1] + R[0, 2] * e_T[2]
     d1 = R[1, 0] * e_T[0] + R[1, 1] * e_T[1] + R[1, 2] * e_T[2]
     d2 = R[2, 0] * e_T[0] + R[2, 1] * e_T[1] + R[2, 2] * e_T[2]
-    add_point_force(rx, ry, rz, d0, d1, d2, T, out)
+    add_point_force(R, rx, ry, rz, d0, d1, d2, T, out)
 
 
 @njit(cache=True, _nrt=False, forceinline=True)
@@ -243,7 +243,7 @@ def _stage(n, st, x, v, z, v_n, R, dt, H, Mt_inv, C, Bv, Bq, F_ext, T, push, flo
         contact_states(R, x, v, ct, cs, kin)
         if not (st == 0 and decide_modes(dt, ct, cs, R, x, Mt_inv, kin, solve, F_try, F, acc, f_t, f_n, needed,
                                          available, v_tol)):
-            contact_forces(dt, ct, cs, Mt_inv, kin, solve, F, acc, f_t, f_n, v_tol)
+            contact_forces(dt, ct, cs, R, Mt_inv, kin, solve, F, acc, f_t, f_n, v_tol)
     for d in range(6):
         kv[st, d] = acc[d]
 

@@ -106,7 +106,10 @@ def preload_stiffness(thrust: float, thrust_position, forces, points, direction=
         K_g = \begin{bmatrix} 0 & -T\,S(e_x) \\ 0 & -S(r_T \times T e_x) + \sum_c S(J^0_c)\,S(r_c) \end{bmatrix}
 
     (forces :math:`T\,\theta \times e_x` — Grøtting 2015 eq. 3.62–3.63 — and moments
-    :math:`\theta \times (r_T \times T e_x) + \sum_c (\theta \times r_c) \times J^0_c`). In the
+    :math:`\theta \times (r_T \times T e_x) + \sum_c (\theta \times r_c) \times J^0_c`), and the turn of
+    the Euler axes the time domain takes the loads' moments about (:func:`boatland.rigid.euler_moment`): with
+    :math:`M^0` their static moment, :math:`\delta Q_\phi = \psi M^0_y - \theta M^0_z`,
+    :math:`\delta Q_\theta = -\psi M^0_x`. In the
     frequency domain it enters as the stiffness :math:`-K_g`. A push along another body direction
     :math:`e_T` (``direction``) replaces :math:`e_x`.
 
@@ -129,9 +132,14 @@ def preload_stiffness(thrust: float, thrust_position, forces, points, direction=
     ex = np.asarray(direction, dtype=float).reshape(3)
     Kg = np.zeros((6, 6))
     Kg[:3, 3:] = -thrust * skew(ex)
-    Kg[3:, 3:] = -skew(np.cross(np.asarray(thrust_position, dtype=float), thrust * ex))
+    M0 = np.cross(np.asarray(thrust_position, dtype=float), thrust * ex)
+    Kg[3:, 3:] = -skew(M0)
     for f, r in zip(np.atleast_2d(forces), np.atleast_2d(points)):
         Kg[3:, 3:] += skew(f) @ skew(r)
+        M0 = M0 + np.cross(r, f)
+    Kg[3, 4] -= M0[2]                      # the Euler axes turning under the static moment
+    Kg[3, 5] += M0[1]
+    Kg[4, 5] -= M0[0]
     return Kg
 
 

@@ -39,7 +39,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
-from boatland.rigid import add_point_force
+from boatland.rigid import add_point_force, angular_velocity, euler_moment
 from boatland.tomlspec import Key, Table, Vector
 
 __all__ = ["DragTable", "DragLoad", "add_drag", "crossflow_table", "drag_keys", "geometry_from", "global_direction",
@@ -242,6 +242,7 @@ def add_drag(R, v, U, s, tab, par, strips, F):
     """
     yc = par[7]
     table = par[0] != 0.0
+    ox, oy, oz, _, _, _ = angular_velocity(R, v)
     for i in range(strips.shape[0]):
         sh = strips[i, 2]
         if sh == 0.0:
@@ -250,8 +251,8 @@ def add_drag(R, v, U, s, tab, par, strips, F):
         rx = R[0, 0] * xb + R[0, 1] * yc + R[0, 2] * zb
         ry = R[1, 0] * xb + R[1, 1] * yc + R[1, 2] * zb
         rz = R[2, 0] * xb + R[2, 1] * yc + R[2, 2] * zb
-        wx = s * U[0] - (v[0] + v[4] * rz - v[5] * ry)
-        wy = s * U[1] - (v[1] + v[5] * rx - v[3] * rz)
+        wx = s * U[0] - (v[0] + oy * rz - oz * ry)
+        wy = s * U[1] - (v[1] + oz * rx - ox * rz)
         bx = R[0, 0] * wx + R[1, 0] * wy
         by = R[0, 1] * wx + R[1, 1] * wy
         if table:
@@ -269,11 +270,12 @@ def add_drag(R, v, U, s, tab, par, strips, F):
             fy = sh * par[2] * par[5] * by * abs(by)
             nz = -2.0 * sh * par[3] * par[6] * bx * by
         # body (fx, fy, 0) in the local frame, at p
-        add_point_force(rx, ry, rz, R[0, 0], R[1, 0], R[2, 0], fx, F)
-        add_point_force(rx, ry, rz, R[0, 1], R[1, 1], R[2, 1], fy, F)
-        F[3] += R[0, 2] * nz
-        F[4] += R[1, 2] * nz
-        F[5] += R[2, 2] * nz
+        add_point_force(R, rx, ry, rz, R[0, 0], R[1, 0], R[2, 0], fx, F)
+        add_point_force(R, rx, ry, rz, R[0, 1], R[1, 1], R[2, 1], fy, F)
+        q4, q5, q6 = euler_moment(R, R[0, 2] * nz, R[1, 2] * nz, R[2, 2] * nz)
+        F[3] += q4
+        F[4] += q5
+        F[5] += q6
 
 
 def silhouette(vertices, faces, normal_axis: int, *, cell: float = 0.05, z_max: float | None = None,
