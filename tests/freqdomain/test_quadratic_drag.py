@@ -172,10 +172,9 @@ def test_a_beam_current_skews_the_governing_margin_towards_a_slip(ctv27):
     """Bow-quartering seas, 1 m/s on the beam (the validation's case, tests/validation/test_loads_vs_monte_carlo.py):
     the governing margin (contact 1 slipping up) is skewed towards the slip, second order in the waves (its
     skewness grows as H_s), and its slip rate rises by the Hermite tail. Measured 2026-12-03: skewness 0.013 /
-    0.020 / 0.025 at H_s 0.2 / 0.3 / 0.385 m (the drag's own linearisation makes it grow a little slower than
-    H_s), P per 30 min 0.355 → 0.415 at 0.385 m. The time domain's: 0.035 / 0.056 / 0.061, of which the drag's
-    square makes 0.020 at 0.385 m (the kernel with the square taken out: 0.041); the rest comes with the sway's
-    damping (README, limits)."""
+    0.019 / 0.025 at H_s 0.2 / 0.3 / 0.385 m (the drag's own linearisation makes it grow a little slower than
+    H_s), P per 30 min 0.367 → 0.425 at 0.385 m (the slip rate ×1.21); the time domain's skewness
+    (tests/validation/test_drag_skewness.py): 0.012 / 0.020 at 0.2 / 0.3 m."""
     sc, db = ctv27
     sc = sc.replace(BEAM_CURRENT)
     r = {hs: _sea(sc, db, hs) for hs in (0.2, 0.3, 0.385)}
