@@ -667,7 +667,8 @@ def _fd_case(campaign, c, loaders, dbs):
                     h = setup.waves.water_depth
                     m, _ = spectral_moments(tr, [p.Tp], sea=p, water_depth=h, g=db.g)
                     keep = distinct_events(m[..., 0], tr.capacity,
-                                           response_correlation(tr, [p.Tp], sea=p, water_depth=h, g=db.g))
+                                           response_correlation(tr, [p.Tp], sea=p, water_depth=h, g=db.g),
+                                           background=tr.background)
                     dbs[key] = (m, tr.capacity, p.Tp, beta, _access(campaign, sc), keep, tr.background)
         except Exception:  # noqa: BLE001 — the screening is a comparison; NaN where it cannot answer
             dbs[key] = None

@@ -214,7 +214,8 @@ def availability(db: HydroDB, setup: LandingSetup, scatter: ScatterTable, *, acc
     tr = slip_transfer(db, setup, omega=omega, beta_deg=ub, method=method, mu=mu, thrust=thrust)
     h = db.water_depth if water_depth is None else water_depth
     m, captured = spectral_moments(tr, ut, sea=sea, water_depth=h, g=db.g)
-    keep = distinct_events(m[..., 0], tr.capacity, response_correlation(tr, ut, sea=sea, water_depth=h, g=db.g))
+    keep = distinct_events(m[..., 0], tr.capacity, response_correlation(tr, ut, sea=sea, water_depth=h, g=db.g),
+                           background=tr.background)
     table = limiting_hs(m, tr.capacity, ut, ub, accept=p_acc, statistics=statistics,
                         access_duration=access_duration, method=method, captured=captured, names=tr.names,
                         keep=keep, background=tr.background)

@@ -232,18 +232,21 @@ def slip_transfer(db: HydroDB, setup: LandingSetup, *, omega=None, beta_deg=None
     cap = np.concatenate(cap + [[math.radians(setup.roll_limit_deg)]])
     background = None
     if method != "wu" and setup.steady is not None and setup.steady.gust_pattern is not None:
-        background = SlowSwing(gust_moments(db, setup, J0), setup.steady.linear_share)
+        mom, cor = gust_moments(db, setup, J0, correlation=True)
+        background = SlowSwing(mom, setup.steady.linear_share, cor)
     return SlipTransfer(omega=w, beta_deg=b, H=H, capacity=cap, names=tuple(names + ["roll"]), J_static=J0,
                         N_static=np.einsum("pk,pk->p", setup.normals, J0), method=method, setup=setup,
                         background=background, motions=r.x, directions=np.stack(rows))
 
 
-def gust_moments(db: HydroDB, setup: LandingSetup, J0: np.ndarray) -> np.ndarray:
+def gust_moments(db: HydroDB, setup: LandingSetup, J0: np.ndarray, correlation: bool = False):
     r"""Spectral moments (R, 3) of every margin and of roll answering the gusts,
     :math:`m_k = \int \omega^k |H_g(\omega)|^2 S_g(\omega)\,d\omega`, with :math:`H_g` the margins per unit
     gust force g (:class:`boatland.landing.law.SteadyLoad`: pattern f_g, spectrum S_g) from the landed response
     to f_g on the gusts' own grid (:meth:`LandingSetup.gust_response`, trapezoid); ``J0`` (Np, 3) the static
-    contact forces, which tilt the margins' directions as the waves' (:func:`slip_directions`)."""
+    contact forces, which tilt the margins' directions as the waves' (:func:`slip_directions`). With
+    ``correlation``, also the swing's correlation (R, R) between the responses (1 between two it does not
+    move: :attr:`boatland.freqdomain.statistics.SlowSwing.correlation`)."""
     w, wt, x, J = setup.gust_response(db)
     Hg = []
     for c in range(setup.n_points):
@@ -251,7 +254,13 @@ def gust_moments(db: HydroDB, setup: LandingSetup, J0: np.ndarray) -> np.ndarray
         Hg.append(J[:, c] @ (slip_directions(n, J0[c], setup.mu) - setup.mu * n).T)   # (Nw, 4)
     Hg = np.concatenate(Hg + [x[:, 3:4]], axis=-1)
     S = setup.steady.gust_spectrum(w)
-    return np.einsum("w,w,wr,wk->rk", S, wt, np.abs(Hg) ** 2, w[:, None] ** np.arange(3)[None, :])
+    m = np.einsum("w,w,wr,wk->rk", S, wt, np.abs(Hg) ** 2, w[:, None] ** np.arange(3)[None, :])
+    if not correlation:
+        return m
+    rho = correlation_matrix(np.einsum("w,w,wi,wj->ij", S, wt, Hg, Hg.conj()).real)
+    still = m[:, 0] <= 1e-12 * max(float(m[:, 0].max()), 1e-300)
+    rho[np.ix_(still, still)] = 1.0
+    return m, rho
 
 
 def screening_grid(db: HydroDB, setup: LandingSetup, Tp, beta_deg=None, *, accept=ACCEPT_PRESETS["best"],
@@ -295,7 +304,8 @@ def screening_grid(db: HydroDB, setup: LandingSetup, Tp, beta_deg=None, *, accep
     tr = slip_transfer(db, setup, omega=omega, beta_deg=beta_deg, method=method, mu=mu, thrust=thrust)
     h = db.water_depth if water_depth is None else water_depth
     m, captured = spectral_moments(tr, Tp, sea=sea, water_depth=h, g=db.g)
-    keep = distinct_events(m[..., 0], tr.capacity, response_correlation(tr, Tp, sea=sea, water_depth=h, g=db.g))
+    keep = distinct_events(m[..., 0], tr.capacity, response_correlation(tr, Tp, sea=sea, water_depth=h, g=db.g),
+                           background=tr.background)
     S, wt = unit_spectra(tr.omega, Tp, sea=sea, water_depth=h, g=db.g)
     tails = tr.drag_tails(db, np.broadcast_to((S * wt)[:, None, :], (S.shape[0], tr.beta_deg.size, wt.size)))
     return limiting_hs(m, tr.capacity, Tp, tr.beta_deg, accept=accept, statistics=statistics,
@@ -434,7 +444,8 @@ def sea_response(db: HydroDB, setup: LandingSetup, parts, *, water_depth: float 
         tails = tr.drag_tails(db, (S * wt[None, :])[None], sigma=sig, together=True)
     m = np.einsum("bw,w,wbr,wk->rk", S, wt, np.abs(tr.H) ** 2, w[:, None] ** np.arange(3)[None, :])
     cov = np.einsum("bw,w,wbi,wbj->ij", S, wt, tr.H, tr.H.conj()).real
-    keep = distinct_events(m[None, None, :, 0], tr.capacity, correlation_matrix(cov)[None, None])
+    keep = distinct_events(m[None, None, :, 0], tr.capacity, correlation_matrix(cov)[None, None],
+                           background=tr.background)
     Tc = parts[int(np.argmax([p.Hs for p in parts]))].Tp
     pc, pa, per_mode = incident_probability(1.0, m[None, None], tr.capacity, [Tc], statistics=statistics,
                                             access_duration=access_duration, keep=keep, background=tr.background,

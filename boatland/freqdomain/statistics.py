@@ -235,13 +235,17 @@ def correlation_matrix(cov: np.ndarray) -> np.ndarray:
 
 
 def distinct_events(m0: np.ndarray, capacity: np.ndarray, correlation: np.ndarray,
-                    same: float = SAME_EVENT) -> np.ndarray:
+                    same: float = SAME_EVENT, background: "SlowSwing | None" = None) -> np.ndarray:
     r"""Which responses are events of their own: a response correlated at ρ ≥ ``same`` with one that is
     at least as likely (smaller reliability index β = a/σ) exceeds its capacity only when that one does
     — the same event — and is left out of the union. Two symmetric contacts in head seas have identical
     margins (ρ = 1): counted twice, as independent events, they would double the incident rate. β is
     proportional to 1/Hs for every response, so the choice does not depend on Hs. Roll (the last
-    response) is always kept.
+    response) is always kept. With a ``background`` (the gusts' slow swing, which does not grow with Hs) two
+    responses are one event only when both their wave parts and their swings are that correlated: the swing
+    turns the vessel about its bow one way, then the other, unloading each tube in turn, so symmetric tubes
+    the waves load alike slip at different moments (ctv27 in head seas with a 10 kn beam wind: the time
+    domain's first-slip rate is twice one tube's). Counting both when the waves dominate is on the safe side.
 
     Parameters
     ----------
@@ -254,6 +258,8 @@ def distinct_events(m0: np.ndarray, capacity: np.ndarray, correlation: np.ndarra
     -------
     ndarray of bool, shape (..., R)
     """
+    if background is not None and background.correlation is not None:
+        correlation = np.minimum(correlation, background.correlation)
     with np.errstate(divide="ignore", invalid="ignore"):
         beta = np.where(m0 > 0, capacity / np.sqrt(m0), np.inf)
     keep = np.ones(m0.shape, bool)
@@ -335,10 +341,15 @@ class SlowSwing:
         λ: the share of the swing's equivalent damping that is linear (radiation, fender, the drag's
         derivative at the mean current); the rest is the hull's quadratic drag, which makes its large swings
         rarer than a Gaussian's (:func:`slow_amplitude_weights`). 1: all linear (Rayleigh amplitudes).
+    correlation : ndarray, shape (R, R), optional
+        The swing's correlation between the responses (1 between two it does not move at all): a yaw swing
+        unloads one tube while it loads the other, so margins the waves make identical differ in the gusts
+        (:func:`distinct_events`).
     """
 
     moments: np.ndarray
     linear_share: float = 1.0
+    correlation: np.ndarray | None = None
 
 
 #: κ of the swing amplitudes' law under quadratic damping (:func:`slow_amplitude_weights`): (8/9π)/√(8/π).

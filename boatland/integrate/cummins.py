@@ -23,7 +23,10 @@ State space: the fitted systems :math:`\dot z = A_r z + B_r \dot x_j`, :math:`\m
 appended to the RK4 state, so they are consistent at every stage by construction.
 
 All arrays are SI, DOF order surge..yaw, body motions small (linear hydrodynamics) while positions
-of force points follow the exact rotation :math:`R(\phi,\theta,\psi)` (z-y-x Euler angles).
+of force points follow the exact rotation :math:`R(\phi,\theta,\psi)` (z-y-x Euler angles); the point
+loads (contacts, push, hull drag) enter as the generalised forces of those angles — their moments about the
+Euler axes, the virtual work of the coordinates — and the angles' rates make the angular velocity through the
+same axes (:func:`boatland.rigid.euler_moment`, :func:`boatland.rigid.angular_velocity`).
 
 Speed: :func:`run_cummins` allocates every buffer before the first step; the helpers it calls per
 stage only index those arrays, so they are compiled without numba's reference counting
