@@ -35,7 +35,7 @@ def test_a_beam_current_lowers_the_limits(default_landing):
     # the skipper trims the push against the current's yaw moment (it takes 57 % of the side load at 1 m/s), the
     # fender carries the rest and the current's roll moment loads one tube's vertical friction more than the
     # other's; its drag damps the sway–yaw–roll response. On ctv27 at Tp 7 s (screening, Rice, 1.19e-3 per access):
-    # head seas 0.374 → 0.299 m at 1 m/s and 0.181 m at 1.5 m/s; beam seas 0.155 → 0.154 m at 1 m/s (the damping
+    # head seas 0.374 → 0.299 m at 1 m/s and 0.180 m at 1.5 m/s; beam seas 0.155 → 0.154 m at 1 m/s (the damping
     # and the friction it uses nearly balance; tests/validation/test_loads_vs_monte_carlo.py for the time domain)
     # and 0.097 m at 1.5 m/s (measured 2026-12-03, the friction circle in the margins); without the trim 0.3 m/s
     # halves every limit (the tubes hold the yaw moment alone)
