@@ -82,27 +82,17 @@ def test_a_linear_sway_damping_leaves_the_friction_margin_gaussian():
 
     from scipy.stats import skew
 
+    from stuck_margins import up_margin_records
+
     from boatland.checks.files import load, resolve_database
-    from boatland.landing.setup import Setup
     from boatland.resources import shipped_scenarios
-    from boatland.trial.simulate import simulate
 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         sc = load(shipped_scenarios() / "ctv_landing.toml").replace(
             {"sea.Hs": 0.3, "sea.Tp": 7.0, "sea.relative_direction_deg": 135.0, "simulation.duration": 1834.0,
              "vessel.damping.linear": [0.0, 72e3, 0.0, 0.0, 0.0, 0.0]})
-        db = resolve_database(sc)
-        memory = Setup.of(sc, db).memory()
-        z = []
-        for k in range(48):
-            r = simulate(sc.replace({"simulation.seed": 500 + k}), db, memory=memory)
-            rows = np.flatnonzero(r.t >= r.exposure_from)
-            slips = r.slip_rows[0]
-            slips = slips[slips >= rows[0]]
-            if slips.size:
-                rows = rows[rows < slips[0]]
-            z.append(-(0.8 * r.fn[rows, 1] + r.ft[rows, 1, 0]))
+        z = up_margin_records(sc, resolve_database(sc), 48)
     g = float(skew(np.concatenate(z)))
     print(f"skewness of the up-slip margin: {g:+.4f}")
     assert abs(g) < 0.015

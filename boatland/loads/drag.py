@@ -39,7 +39,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
-from boatland.rigid import add_point_force, angular_velocity, euler_moment
+from boatland.rigid import angular_velocity, euler_moment
 from boatland.tomlspec import Key, Table, Vector
 
 __all__ = ["DragTable", "DragLoad", "add_drag", "crossflow_table", "drag_keys", "geometry_from", "global_direction",
@@ -243,6 +243,7 @@ def add_drag(R, v, U, s, tab, par, strips, F):
     yc = par[7]
     table = par[0] != 0.0
     ox, oy, oz, _, _, _ = angular_velocity(R, v)
+    Fx = Fy = Fz = Mx = My = Mz = 0.0
     for i in range(strips.shape[0]):
         sh = strips[i, 2]
         if sh == 0.0:
@@ -269,13 +270,24 @@ def add_drag(R, v, U, s, tab, par, strips, F):
             fx = sh * par[1] * par[4] * bx * abs(bx)
             fy = sh * par[2] * par[5] * by * abs(by)
             nz = -2.0 * sh * par[3] * par[6] * bx * by
-        # body (fx, fy, 0) in the local frame, at p
-        add_point_force(R, rx, ry, rz, R[0, 0], R[1, 0], R[2, 0], fx, F)
-        add_point_force(R, rx, ry, rz, R[0, 1], R[1, 1], R[2, 1], fy, F)
-        q4, q5, q6 = euler_moment(R, R[0, 2] * nz, R[1, 2] * nz, R[2, 2] * nz)
-        F[3] += q4
-        F[4] += q5
-        F[5] += q6
+        # body (fx, fy, 0) in the local frame, at p, and the yaw moment about the body z axis
+        gx = fx * R[0, 0] + fy * R[0, 1]
+        gy = fx * R[1, 0] + fy * R[1, 1]
+        gz = fx * R[2, 0] + fy * R[2, 1]
+        Fx += gx
+        Fy += gy
+        Fz += gz
+        Mx += ry * gz - rz * gy + R[0, 2] * nz
+        My += rz * gx - rx * gz + R[1, 2] * nz
+        Mz += rx * gy - ry * gx + R[2, 2] * nz
+    # the strips' moments summed in the local frame, then about the Euler axes once (the projection is linear)
+    F[0] += Fx
+    F[1] += Fy
+    F[2] += Fz
+    q4, q5, q6 = euler_moment(R, Mx, My, Mz)
+    F[3] += q4
+    F[4] += q5
+    F[5] += q6
 
 
 def silhouette(vertices, faces, normal_axis: int, *, cell: float = 0.05, z_max: float | None = None,

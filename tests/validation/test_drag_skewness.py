@@ -29,20 +29,9 @@ MU = 0.8
 
 def _time_domain(sc, db, seeds):
     from scipy.stats import skew
+    from stuck_margins import up_margin_records
 
-    from boatland.landing.setup import Setup
-    from boatland.trial.simulate import simulate
-
-    memory = Setup.of(sc, db).memory()
-    z = []
-    for k in range(seeds):
-        r = simulate(sc.replace({"simulation.seed": 500 + k}), db, memory=memory)
-        rows = np.flatnonzero(r.t >= r.exposure_from)
-        slips = r.slip_rows[0]
-        slips = slips[slips >= rows[0]]
-        if slips.size:
-            rows = rows[rows < slips[0]]
-        z.append(-(MU * r.fn[rows, 1] + r.ft[rows, 1, 0]))
+    z = up_margin_records(sc, db, seeds, mu=MU)
     rng = np.random.default_rng(0)
     boot = [skew(np.concatenate([z[i] for i in rng.integers(0, len(z), len(z))])) for _ in range(100)]
     return float(skew(np.concatenate(z))), float(np.std(boot))
