@@ -15,6 +15,17 @@ REFDATA = Path(__file__).resolve().parent / "data" / "refdata"
 VALIDATION = Path(__file__).resolve().parent / "validation"
 
 
+@pytest.fixture(scope="session", autouse=True)
+def disk_cache(tmp_path_factory) -> Path:
+    """The disk cache of this test session (:mod:`boatland.diskcache`): a fresh folder, never the user's;
+    subprocesses inherit it through the environment."""
+    import os
+
+    path = tmp_path_factory.mktemp("boatland_cache")
+    os.environ["BOATLAND_CACHE_DIR"] = str(path)
+    return path
+
+
 @pytest.fixture(scope="session")
 def refdata() -> Path:
     """Folder of the public reference data in the repository (``tests/data/refdata``)."""

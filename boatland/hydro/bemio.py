@@ -31,7 +31,6 @@ write; rewriting a database with :func:`write_bemio` keeps nothing else.
 
 from __future__ import annotations
 
-import dataclasses
 import json
 from pathlib import Path
 
@@ -41,6 +40,7 @@ from boatland import __version__
 from boatland.atomic import atomic_path
 from boatland.errors import HydroDataError
 from boatland.vessel.database import HullMesh, HydroDB, Provenance
+from boatland.vessel.radiation import read_memory, write_memory
 
 __all__ = ["read_bemio", "write_bemio", "is_bemio", "write_drift", "write_radiation", "read_radiation"]
 
@@ -371,16 +371,7 @@ def write_radiation(path: str | Path, memory, rho: float) -> Path:
             f[f"{_IRF}/K"] = irf.K / rho
             f[f"{_IRF}/t"] = irf.t.reshape(-1, 1)
             f[f"{_IRF}/w"] = np.asarray(irf.check_band, dtype=float).reshape(-1, 1)
-            x = f.create_group(_XIRF)
-            x["K"], x["t"], x["A_inf"] = irf.K, irf.t, irf.A_inf
-            for key in ("ogilvie_spread", "err_B", "err_A", "truncation"):
-                x[key] = getattr(irf, key)
-            x["significant"] = irf.significant.astype(np.int8)
-            x.attrs["A_inf_source"] = irf.A_inf_source
-            x.attrs["settings"] = json.dumps(dataclasses.asdict(irf.settings))
-            x.attrs["omega_max_used"] = irf.omega_max_used
-            x.attrs["check_band"] = np.asarray(irf.check_band, dtype=float)
-            x.attrs["notes"] = json.dumps(list(irf.notes))
+            write_memory(f.create_group(_XIRF), memory)
             if ss is not None:
                 n = max([fit.order for fit in ss.pairs.values()] + [1])
                 A = np.zeros((6, 6, n, n)); B = np.zeros((6, 6, n, 1)); C = np.zeros((6, 6, 1, n))
@@ -391,14 +382,6 @@ def write_radiation(path: str | Path, memory, rho: float) -> Path:
                 f[f"{_SS}/D/all"] = np.zeros((6, 6))
                 f[f"{_SS}/it"] = ss.orders.astype(float)
                 f[f"{_SS}/r2t"] = np.nan_to_num(ss.r2, nan=0.0)
-                xs = x.create_group("state_space")
-                xs["A"], xs["B"], xs["C"] = A, B, C
-                xs["order"] = ss.orders
-                xs["r2"] = ss.r2
-                xs["passivity"] = ss.passivity
-                xs.attrs["target_r2"] = ss.target_r2
-                xs.attrs["max_order"] = ss.max_order
-                xs.attrs["notes"] = json.dumps(list(ss.notes))
     return path
 
 
@@ -409,33 +392,5 @@ def read_radiation(path: str | Path):
     """
     import h5py
 
-    from boatland.irf.impulse import IRF, IRFSettings
-    from boatland.irf.statespace import PairFit, StateSpace
-    from boatland.vessel.radiation import RadiationMemory
-
     with h5py.File(path, "r") as f:
-        if _XIRF not in f:
-            return None
-        x = f[_XIRF]
-        settings = json.loads(x.attrs["settings"])
-        if settings.get("check_band") is not None:
-            settings["check_band"] = tuple(settings["check_band"])
-        irf = IRF(t=x["t"][()], K=x["K"][()], A_inf=x["A_inf"][()], A_inf_source=str(x.attrs["A_inf_source"]),
-                  ogilvie_spread=x["ogilvie_spread"][()], err_B=x["err_B"][()], err_A=x["err_A"][()],
-                  truncation=x["truncation"][()], significant=x["significant"][()].astype(bool),
-                  settings=IRFSettings(**settings), omega_max_used=float(x.attrs["omega_max_used"]),
-                  notes=tuple(json.loads(x.attrs["notes"])), check_band=tuple(x.attrs["check_band"]))
-        ss = None
-        if "state_space" in x:
-            xs = x["state_space"]
-            order, r2 = xs["order"][()], xs["r2"][()]
-            A, B, C = xs["A"][()], xs["B"][()], xs["C"][()]
-            pairs = {}
-            for i in range(6):
-                for j in range(6):
-                    k = int(order[i, j])
-                    if irf.significant[i, j]:
-                        pairs[(i, j)] = PairFit(A[i, j, :k, :k], B[i, j, :k, 0], C[i, j, 0, :k], float(r2[i, j]))
-            ss = StateSpace(pairs=pairs, target_r2=float(xs.attrs["target_r2"]), max_order=int(xs.attrs["max_order"]),
-                            passivity=xs["passivity"][()], notes=tuple(json.loads(xs.attrs["notes"])))
-    return RadiationMemory(irf=irf, state_space=ss)
+        return read_memory(f[_XIRF]) if _XIRF in f else None

@@ -33,6 +33,7 @@ Assumptions
 from __future__ import annotations
 
 import hashlib
+import json
 import math
 import weakref
 from dataclasses import dataclass
@@ -40,6 +41,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from boatland.diskcache import cache_key, lookup, store
 from boatland.errors import BoatlandInputError
 from boatland.vessel.wigley import panel_normals_areas
 from boatland.vessel.database import HydroDB
@@ -342,6 +344,10 @@ def scattered_tables(db: HydroDB, position, heading_deg: float, pile_radius: flo
     layout = _table_layout(db, position, heading_deg, pile_radius, water_depth)
     thetas = [float(t) for t in np.unique(np.asarray(theta, dtype=float))]
     made = {t: table for t in thetas if (table := _TABLES.get((*layout.key, t))) is not None}
+    for t in thetas:                       # made by an earlier run: the disk cache (boatland.diskcache)
+        if t not in made and (table := lookup(_disk_key((*layout.key, t)), _read_table)) is not None:
+            _remember(table)
+            made[t] = table
     missing = [t for t in thetas if t not in made]
     k = wavenumber(layout.grid, layout.h, db.g) if missing else None
     for start in range(0, len(missing), TABLE_BATCH):
@@ -350,8 +356,29 @@ def scattered_tables(db: HydroDB, position, heading_deg: float, pile_radius: flo
             d = layout.pos[0] * math.cos(t) + layout.pos[1] * math.sin(t)
             table = ScatteredTable((*layout.key, t), layout.grid, Xs * np.exp(-1j * k * d)[None, :], d)
             _remember(table)
+            store(_disk_key(table.key), table, _write_table)
             made[t] = table
     return [made[t] for t in thetas]
+
+
+#: The modules a table is made by: their source is part of its disk-cache key (:mod:`boatland.diskcache`).
+TABLE_CODE = ("boatland.sea.pile", "boatland.waves.diffraction", "boatland.waves.dispersion",
+              "boatland.vessel.wigley")
+
+
+def _disk_key(key: tuple) -> str:
+    return cache_key("pile-table", key, TABLE_CODE)
+
+
+def _write_table(f, table: "ScatteredTable") -> None:
+    f["grid"], f["reduced"] = table.grid, table.reduced
+    f.attrs["d"] = table.d
+    f.attrs["key"] = json.dumps(table.key)         # str and float (inf as Infinity): read back exactly
+
+
+def _read_table(f) -> "ScatteredTable":
+    key = json.loads(str(f.attrs["key"]))
+    return ScatteredTable(tuple(key), f["grid"][()], f["reduced"][()], float(f.attrs["d"]))
 
 
 #: Directions whose tables :func:`scattered_tables` makes in one pass (the field's arrays are (panels, ω,

@@ -8,16 +8,19 @@ result. Storage in the database file is in :mod:`boatland.hydro.bemio`.
 from __future__ import annotations
 
 import dataclasses
+import json
 from dataclasses import dataclass
 
 import numpy as np
 
+from boatland.diskcache import cache_key, cached
 from boatland.irf.impulse import IRF, IRFSettings, compute_irf
-from boatland.irf.statespace import StateSpace, fit_state_space
+from boatland.irf.statespace import PairFit, StateSpace, fit_state_space
 from boatland.vessel.database import HydroDB
 from boatland.reproducible import single_threaded
 
-__all__ = ["RadiationMemory", "radiation_memory", "memory_damping", "default_dt", "TARGET_R2", "MAX_ORDER"]
+__all__ = ["RadiationMemory", "radiation_memory", "memory_damping", "default_dt", "write_memory", "read_memory",
+           "TARGET_R2", "MAX_ORDER"]
 
 #: Default state-space fit target and order cap. The R² of K(t) is dominated by the large low-frequency
 #: damping peak; the damping at a catamaran's heave and pitch resonances is a seventh of that peak, so
@@ -41,9 +44,16 @@ class RadiationMemory:
     state_space: StateSpace | None = None
 
 
+#: The modules a radiation memory is made by: their source is part of its disk-cache key
+#: (:mod:`boatland.diskcache`), so that a change of method makes a new entry.
+MEMORY_CODE = ("boatland.irf.impulse", "boatland.irf.quadrature", "boatland.irf.statespace", "boatland.vessel.radiation")
+
+
 def radiation_memory(db: HydroDB, settings: IRFSettings | None = None, *, fit: bool = True,
                      target_r2: float = TARGET_R2, max_order: int = MAX_ORDER) -> RadiationMemory:
-    """Compute the radiation IRFs (and the state-space fit) of ``db``.
+    """Compute the radiation IRFs (and the state-space fit) of ``db``, or read them back from the disk cache
+    (:mod:`boatland.diskcache`: keyed by the database's ω, A, B, A∞ and volume, the settings and this code;
+    the same bits as computing them).
 
     Parameters
     ----------
@@ -60,9 +70,76 @@ def radiation_memory(db: HydroDB, settings: IRFSettings | None = None, *, fit: b
         settings = IRFSettings(dt=default_dt(db.omega[-1]))
     if settings.length_scale == 1.0 and db.disp_vol > 0:
         settings = dataclasses.replace(settings, length_scale=float(db.disp_vol ** (1 / 3)))
-    with single_threaded():   # K (a matrix product) and the fit (LAPACK): the same bits on any core count
-        irf = compute_irf(db.omega, db.A, db.B, db.A_inf, settings)
-        ss = fit_state_space(irf, db.omega, db.B, target_r2=target_r2, max_order=max_order) if fit else None
+
+    def make() -> RadiationMemory:
+        with single_threaded():   # K (a matrix product) and the fit (LAPACK): the same bits on any core count
+            irf = compute_irf(db.omega, db.A, db.B, db.A_inf, settings)
+            ss = fit_state_space(irf, db.omega, db.B, target_r2=target_r2, max_order=max_order) if fit else None
+        return RadiationMemory(irf=irf, state_space=ss)
+
+    a_inf = np.zeros(0) if db.A_inf is None else np.asarray(db.A_inf, dtype=float)
+    key = cache_key("radiation", (np.asarray(db.omega, dtype=float), np.asarray(db.A, dtype=float),
+                                  np.asarray(db.B, dtype=float), a_inf, float(db.disp_vol),
+                                  json.dumps(dataclasses.asdict(settings), default=repr), bool(fit),
+                                  float(target_r2), int(max_order)), MEMORY_CODE)
+    return cached(key, make, write_memory, read_memory)
+
+
+def write_memory(group, memory: RadiationMemory) -> None:
+    """Store ``memory`` exactly (IRFs, settings, checks, notes and the state-space fit) in an HDF5 group
+    (read back by :func:`read_memory`; the database file's ``/body1/boatland/irf``)."""
+    irf, ss = memory.irf, memory.state_space
+    x = group
+    x["K"], x["t"], x["A_inf"] = irf.K, irf.t, irf.A_inf
+    for key in ("ogilvie_spread", "err_B", "err_A", "truncation"):
+        x[key] = getattr(irf, key)
+    x["significant"] = irf.significant.astype(np.int8)
+    x.attrs["A_inf_source"] = irf.A_inf_source
+    x.attrs["settings"] = json.dumps(dataclasses.asdict(irf.settings))
+    x.attrs["omega_max_used"] = irf.omega_max_used
+    x.attrs["check_band"] = np.asarray(irf.check_band, dtype=float)
+    x.attrs["notes"] = json.dumps(list(irf.notes))
+    if ss is None:
+        return
+    n = max([f.order for f in ss.pairs.values()] + [1])
+    A = np.zeros((6, 6, n, n)); B = np.zeros((6, 6, n, 1)); C = np.zeros((6, 6, 1, n))
+    for (i, j), f in ss.pairs.items():
+        k = f.order
+        A[i, j, :k, :k], B[i, j, :k, 0], C[i, j, 0, :k] = f.A, f.B, f.C
+    xs = x.create_group("state_space")
+    xs["A"], xs["B"], xs["C"] = A, B, C
+    xs["order"] = ss.orders
+    xs["r2"] = ss.r2
+    xs["passivity"] = ss.passivity
+    xs.attrs["target_r2"] = ss.target_r2
+    xs.attrs["max_order"] = ss.max_order
+    xs.attrs["notes"] = json.dumps(list(ss.notes))
+
+
+def read_memory(group) -> RadiationMemory:
+    """The :class:`RadiationMemory` :func:`write_memory` stored in an HDF5 group."""
+    x = group
+    settings = json.loads(x.attrs["settings"])
+    if settings.get("check_band") is not None:
+        settings["check_band"] = tuple(settings["check_band"])
+    irf = IRF(t=x["t"][()], K=x["K"][()], A_inf=x["A_inf"][()], A_inf_source=str(x.attrs["A_inf_source"]),
+              ogilvie_spread=x["ogilvie_spread"][()], err_B=x["err_B"][()], err_A=x["err_A"][()],
+              truncation=x["truncation"][()], significant=x["significant"][()].astype(bool),
+              settings=IRFSettings(**settings), omega_max_used=float(x.attrs["omega_max_used"]),
+              notes=tuple(json.loads(x.attrs["notes"])), check_band=tuple(x.attrs["check_band"]))
+    ss = None
+    if "state_space" in x:
+        xs = x["state_space"]
+        order, r2 = xs["order"][()], xs["r2"][()]
+        A, B, C = xs["A"][()], xs["B"][()], xs["C"][()]
+        pairs = {}
+        for i in range(6):
+            for j in range(6):
+                k = int(order[i, j])
+                if irf.significant[i, j]:
+                    pairs[(i, j)] = PairFit(A[i, j, :k, :k], B[i, j, :k, 0], C[i, j, 0, :k], float(r2[i, j]))
+        ss = StateSpace(pairs=pairs, target_r2=float(xs.attrs["target_r2"]), max_order=int(xs.attrs["max_order"]),
+                        passivity=xs["passivity"][()], notes=tuple(json.loads(xs.attrs["notes"])))
     return RadiationMemory(irf=irf, state_space=ss)
 
 
