@@ -38,3 +38,15 @@ def test_a_missing_optional_dependency_names_the_extra():
                 del sys.modules["xarray"]
             else:
                 sys.modules["xarray"] = saved
+
+
+@pytest.mark.parametrize("path", sorted((shipped_scenarios() / "campaigns").glob("*.toml")), ids=lambda p: p.stem)
+def test_every_shipped_campaign_loads_and_checks(path):
+    """Each shipped campaign file is valid and every case passes the checks `boatland run` makes."""
+    from boatland.campaign.plan import load_campaign
+    from boatland.campaign.prepare import check_cases
+    from boatland.checks.files import load, resolve_database
+
+    campaign = load_campaign(path, load_scenario=load)
+    assert campaign.n_trials > 0 or campaign.method == "isee"
+    check_cases(campaign, resolve_database)

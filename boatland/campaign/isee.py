@@ -257,7 +257,7 @@ def execute_sample(source: str, spec: SampleSpec, loaders, plain: bool = False) 
     events of D it exceeds (0 if none: then the linear model sees no slip, and a time-domain incident there
     would lie outside the sampling domain)."""
     from boatland.checks.memory import check_radiation
-    from boatland.trial.simulate import BlowUpError, simulate
+    from boatland.trial.simulate import BlowUpError, motion_arrays, simulate
 
     wall0 = time.perf_counter()
     row = {"trial": spec.trial, "case": spec.case, "seed_index": spec.sample, "level": spec.level, "hs": spec.hs}
@@ -296,8 +296,11 @@ def execute_sample(source: str, spec: SampleSpec, loaders, plain: bool = False) 
                 if spec.case not in ctx["checked"]:
                     check_radiation(setup, ctx["memory"][mkey])
                     ctx["checked"].add(spec.case)
+                akey = ("arrays", mkey, setup.dt)
+                if akey not in ctx["memory"]:                # the kernel's arrays: the same for every sample
+                    ctx["memory"][akey] = motion_arrays(setup, ctx["memory"][mkey])
                 try:
-                    result = simulate(sc, db, memory=ctx["memory"][mkey], waves=model.sea.with_u(u), setup=setup,
+                    result = simulate(sc, db, arrays=ctx["memory"][akey], waves=model.sea.with_u(u), setup=setup,
                                       gust_seed=sample_gust_seed(sc, ss))
                 except BlowUpError as exc:
                     result = exc.result

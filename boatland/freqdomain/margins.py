@@ -67,6 +67,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numba
 import numpy as np
 from scipy.special import log_ndtr
 
@@ -281,16 +282,15 @@ class LandedMargins:
         """Everything the linear model says about one sample (:class:`Indicators`). ``chosen``: the
         flattened event the sample was drawn from — counted even where rounding puts u on its boundary."""
         y = self.series(u)
-        hit = self.margins(y) > 0
-        if chosen is not None:
-            hit.flat[int(chosen)] = True
         npt = self.n_points
+        n_hit = _count_exceeded(y, npt, np.cos(self.phi), np.sin(self.phi), self.mu_cover, self.roll_limit,
+                                self.kappa * self.s, -1 if chosen is None else int(chosen))
         fn, fv, fh = y[0:3 * npt:3], y[1:3 * npt:3], y[2:3 * npt:3]
         ft = np.hypot(fv, fh) if self.sideways else np.abs(fv)
         any_circle = (ft > self.mu * fn).any(axis=0)
         sq = np.maximum(np.abs(fv), np.abs(fh) if self.sideways else 0.0) > self.mu * fn
         first = int(np.argmax(any_circle)) if any_circle.any() else -1
-        return Indicators(n_exceeded=int(np.count_nonzero(hit)), first_slip=bool(any_circle.any()),
+        return Indicators(n_exceeded=n_hit, first_slip=bool(any_circle.any()),
                           square=bool(sq.any()), contact_loss=bool(np.any(fn < 0)),
                           roll=bool(np.any(np.abs(y[-1]) > self.roll_limit)),
                           t_first_slip=float(self.steps[first] * self.dt) if first >= 0 else math.nan)
@@ -325,6 +325,31 @@ class LandedMargins:
         beta = a / np.sqrt(mom[:, 0])
         nu = np.sqrt(mom[:, 2] / mom[:, 0]) / (2 * math.pi) * np.exp(-0.5 * beta ** 2)
         return float(np.sum(np.exp(log_ndtr(-beta)) + nu * self.duration))
+
+
+@numba.njit(cache=True)
+def _count_exceeded(y, npt, cphi, sphi, mu_d, roll_lim, guard, chosen):
+    """N(u) of :meth:`LandedMargins.indicators`: the margins of :meth:`LandedMargins.margins` > 0 counted
+    without forming them (the same operations in the same order, so the same count), the ``chosen``
+    flattened event (−1: none) counted whatever its rounding."""
+    n_t = y.shape[1]
+    M = cphi.shape[0]
+    count = 0
+    for c in range(npt):
+        for d in range(M):
+            r = c * M + d
+            for k in range(n_t):
+                g = (cphi[d] * y[3 * c + 1, k] + sphi[d] * y[3 * c + 2, k] - mu_d * y[3 * c, k]) + guard[r]
+                if g > 0 or r * n_t + k == chosen:
+                    count += 1
+    base = npt * M
+    for k in range(n_t):
+        roll = y[y.shape[0] - 1, k]
+        if ((roll - roll_lim) + guard[base] > 0) or base * n_t + k == chosen:
+            count += 1
+        if ((-roll - roll_lim) + guard[base + 1] > 0) or (base + 1) * n_t + k == chosen:
+            count += 1
+    return count
 
 
 def margin_events(C, static, phi, mu_d, roll_lim):

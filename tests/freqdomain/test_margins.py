@@ -55,6 +55,25 @@ def test_fft_series_equals_the_explicit_rows(oblique):
     assert np.linalg.norm(lm.rows(7, 0, 50), axis=1) == pytest.approx(np.full(50, lm.s[7]), rel=1e-12)
 
 
+def test_the_count_of_exceeded_events_is_the_margins_count(oblique):
+    """N(u) is counted without forming the (R, n_t) margins: the same count as theirs, on samples drawn from
+    elementary events (many exceedances, the chosen one among them) and on a plain sea at 3× the Hs."""
+    lm = oblique
+    rng = np.random.default_rng(11)
+    for r, k in ((3, 40), (lm.E.shape[0] - 1, 7), (17, lm.n_steps - 1)):
+        j = r * lm.n_steps + k
+        b, cap = lm.row(j)
+        u = rng.standard_normal(lm.dim)
+        u += (cap - b @ u) / (b @ b) * b                       # exactly on the chosen event's boundary
+        hit = lm.margins(lm.series(u)) > 0
+        counted = int(np.count_nonzero(hit)) + (0 if hit.flat[j] else 1)
+        assert lm.indicators(u, chosen=j).n_exceeded == counted
+        assert lm.indicators(u).n_exceeded == int(np.count_nonzero(hit))
+    u = 3.0 * rng.standard_normal(lm.dim)
+    n = int(np.count_nonzero(lm.margins(lm.series(u)) > 0))
+    assert n > 0 and lm.indicators(u).n_exceeded == n
+
+
 def test_the_friction_circle_lies_inside_the_inscribed_polygon(oblique):
     """Unconditioned seas at 1.6× the Hs: whenever the linear model leaves the friction circle, a margin of the
     M-gon at μ cos(π/M) is exceeded at that step (κ = 0); the screening's square is inside the circle."""
