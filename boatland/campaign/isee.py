@@ -41,7 +41,10 @@ Hs_j fit
 (c₁ = 0 with one level; weighted by 1/CoV²). Level 0 is where R = accept; each next level where the fit
 says P = accept, until two levels bracket it (or the nearest level's interval holds it) or ``levels``
 runs. The interval refits the levels' 95 % bounds in logarithms (:math:`\log\hat P \pm 1.96\,\delta`,
-all to the same side: conservative).
+all to the same side: conservative). With ``limit_width`` the search then narrows the limit: while its interval
+is wider than ± that fraction, the level nearest the accepted P gets another batch (decided, like everything
+here, on whole batches only), so each case gets the samples its own interval needs — the whole scatter to ±3 %
+with 40–140 samples a case instead of a fixed CoV's 80–120 (bench/README.md).
 
 Reference: Au, S. K. & Beck, J. L. (2001), *First excursion probabilities for linear systems by very
 efficient importance sampling*, Probabilistic Engineering Mechanics 16(3), 193–207; Grøtting, H. (2015),
@@ -431,6 +434,7 @@ class _Level:
     done: bool = False
     n: int = 0                      # whole batches decided on
     est: IseeEstimate | None = None
+    cap: int = 0                    # a narrowed search's extra samples: the level runs on to at least n + cap
 
 
 def _level_state(level: _Level, rows: np.ndarray, settings, names, incident) -> list[int]:
@@ -446,10 +450,28 @@ def _level_state(level: _Level, rows: np.ndarray, settings, names, incident) -> 
         sel = _completed(rows[rows["seed_index"] < level.n]) if rows.size else rows
         est = run_estimates(sel, names)[incident] if sel.size else None
         level.est = est
-        if level.n >= settings.max_samples or (est is not None and level.n >= settings.min_samples
+        if level.n >= settings.max_samples or (est is not None and level.n >= max(settings.min_samples, level.cap)
                                                and est.cov <= settings.target_cov):
             level.done = True
     return []
+
+
+def _narrow(levels: list[_Level], log_rice, settings) -> bool:
+    """With ``limit_width``: when the limiting Hs's interval is wider than ±width, reopen the level nearest
+    the accepted P for one more batch (True); False when it is narrow enough or no level can grow."""
+    ok = [lv for lv in levels if lv.est is not None and lv.est.p > 0 and math.isfinite(lv.est.cov)]
+    if settings.limit_width is None or not ok:
+        return False
+    h, lo, hi = limit_fit([lv.hs for lv in ok], [lv.est for lv in ok], log_rice, settings.accept)
+    if math.isfinite(h) and math.isfinite(lo) and math.isfinite(hi) and \
+            max(h / lo - 1.0, hi / h - 1.0) <= settings.limit_width:
+        return False
+    grow = [lv for lv in ok if lv.n < settings.max_samples]
+    if not grow:
+        return False
+    nearest = min(grow, key=lambda lv: abs(math.log(lv.est.p / settings.accept)))
+    nearest.cap, nearest.done = nearest.n + settings.batch, False
+    return True
 
 
 def _next_level(levels: list[_Level], log_rice, target: float, max_levels: int) -> float | None:
@@ -533,18 +555,25 @@ def run_isee(campaign: Campaign, store_path: str | Path, *, loaders, executor: s
                 tasks = []
                 for c, lvls in levels.items():
                     while lvls:
-                        j = len(lvls) - 1
-                        rows = table[(table["case"] == c) & (table["level"] == j)] if table.size else table
-                        todo = _level_state(lvls[j], rows, s, names, s.incident)
-                        if todo:
-                            tasks += [SampleSpec(trial_number(c, j, k), c, j, lvls[j].hs, k) for k in todo]
+                        pending = None          # the first open level with samples to run
+                        for k, lv in enumerate(lvls):
+                            if not lv.done:
+                                rows = table[(table["case"] == c) & (table["level"] == k)] if table.size else table
+                                todo = _level_state(lv, rows, s, names, s.incident)
+                                if todo:
+                                    pending = (k, todo)
+                                    break
+                        if pending is not None:
+                            k, todo = pending
+                            tasks += [SampleSpec(trial_number(c, k, q), c, k, lvls[k].hs, q) for q in todo]
                             break
                         if s.accept is None:
                             break
                         h = _next_level(lvls, curves[c], s.accept, s.levels)
-                        if h is None:
+                        if h is not None:
+                            lvls.append(_Level(h))
+                        elif not _narrow(lvls, curves[c], s):     # narrow enough (or nothing can grow)
                             break
-                        lvls.append(_Level(h))
                 if not tasks:
                     break
                 total = len(store.rows) + len(tasks)

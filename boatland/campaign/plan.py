@@ -29,6 +29,7 @@ File format (``scenarios/campaigns/*.toml``)::
     [isee]
     target_cov = 0.1                     # stop a run when its estimate's CoV reaches this
     accept = "best"                      # optional: find each case's limiting Hs at this probability
+    limit_width = 0.03                   # optional: … each to ±3 % (95 %), the samples going where they narrow it
 
 Seeds (DESIGN.md §2): trial ``k`` of every case uses the wave seed
 ``SeedSequence(master_seed, spawn_key=(k,))`` — the same realisation family across cases (common
@@ -77,6 +78,9 @@ ISEE_SCHEMA = Table({
     "accept": Key((float, str), doc="accepted probability of the incident per access (or best / conservative / "
                                     "non-conservative): find each case's limiting Hs"),
     "levels": Key(int, default=4, ge=1, le=12, doc="runs along Hs per case at most, for the limiting Hs"),
+    "limit_width": Key(float, gt=0.0, lt=1.0,
+                       doc="with accept: sample on until the limiting Hs's 95 % interval lies within ± this "
+                           "fraction of it (the level nearest the accepted P gets the samples)"),
 }, optional=True)
 
 CAMPAIGN_SCHEMA = Table({
@@ -114,6 +118,7 @@ class IseeSettings:
     incident: str = "first slip"
     accept: float | None = None
     levels: int = 4
+    limit_width: float | None = None
 
 
 def file_sha256(path: str | Path) -> str:
@@ -337,6 +342,8 @@ def _isee_settings(d: dict, problems: Problems) -> IseeSettings:
             problems.add("isee.accept", str(exc))
     if values.get("min_samples", 40) > values.get("max_samples", 2000):
         problems.add("isee.min_samples", f"must be ≤ isee.max_samples = {values.get('max_samples', 2000)}")
+    if values.get("limit_width") is not None and accept is None:
+        problems.add("isee.limit_width", "needs isee.accept (the probability whose limiting Hs it narrows)")
     return IseeSettings(**values)
 
 

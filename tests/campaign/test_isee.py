@@ -50,6 +50,7 @@ max_samples = 30
 settle = 10.0
 accept = 0.05
 levels = 3
+limit_width = 0.02
 {extra}
 """)
     return path
@@ -107,9 +108,14 @@ def test_the_store_holds_samples_runs_and_limits(reference):
     # the time domain's first slip is the linear model's (beside the guard's margin) in nearly every sample
     agree = np.mean(np.isfinite(t["incident: first slip"]) == (t["lin_first_slip"] == 1))
     assert agree > 0.9
-    # limiting Hs: inside its interval, beside the linear model's and the screening's
+    # limiting Hs: inside its interval, beside the linear model's and the screening's; narrowed to ±limit_width
+    # (2 %) unless the level that gets the samples (nearest the accepted P) ran to max_samples
     for L in lim:
         assert L["limiting Hs lo"] <= L["limiting Hs"] <= L["limiting Hs hi"]
+        lv = runs[runs["case"] == L["case"]]
+        nearest = lv[np.argmin(np.abs(np.log(lv["first slip: P"] / 0.05)))]
+        width = max(L["limiting Hs"] / L["limiting Hs lo"], L["limiting Hs hi"] / L["limiting Hs"]) - 1
+        assert width <= 0.02 or nearest["samples"] == 30, (width, nearest["samples"])
         assert 0.5 < L["limiting Hs"] / L["linear limiting Hs"] < 2 and math.isfinite(L["screening rayleigh Hs"])
     assert "limiting Hs" in r.stdout and "P(first slip)" in r.stdout
 
@@ -166,6 +172,7 @@ def test_resume_after_sigkill_equals_an_uninterrupted_run(reference, tmp_path, s
     ("levels = 3", 'levels = 3\nincident = "slip > 9 m"', (), "isee.incident"),
     ("levels = 3", "levels = 3\ndirections = 2", (), "isee.directions"),
     ("levels = 3", "levels = 3", ("--method", "monte-carlo"), "seeds"),
+    ("accept = 0.05", "", (), "isee.limit_width"),
 ])
 def test_bad_isee_campaigns_are_one_clear_error(tmp_path, old, new, args, expected):
     camp = isee_file(tmp_path)
