@@ -15,17 +15,6 @@ REFDATA = Path(__file__).resolve().parent / "data" / "refdata"
 VALIDATION = Path(__file__).resolve().parent / "validation"
 
 
-@pytest.fixture(scope="session", autouse=True)
-def disk_cache(tmp_path_factory) -> Path:
-    """The disk cache of this test session (:mod:`boatland.diskcache`): a fresh folder, never the user's;
-    subprocesses inherit it through the environment."""
-    import os
-
-    path = tmp_path_factory.mktemp("boatland_cache")
-    os.environ["BOATLAND_CACHE_DIR"] = str(path)
-    return path
-
-
 @pytest.fixture(scope="session")
 def refdata() -> Path:
     """Folder of the public reference data in the repository (``tests/data/refdata``)."""
@@ -93,3 +82,18 @@ class ValidationSkips:
 
 def pytest_configure(config: pytest.Config) -> None:
     config.pluginmanager.register(ValidationSkips(config.rootpath), "boatland-validation-skips")
+    # the disk cache (boatland.diskcache) of this session: a fresh folder, never the user's; set before the test
+    # modules are imported, so that environments they copy at import time for subprocesses carry it too
+    import os
+    import tempfile
+
+    config._boatland_cache = tempfile.mkdtemp(prefix="boatland_test_cache_")
+    os.environ["BOATLAND_CACHE_DIR"] = config._boatland_cache
+
+
+def pytest_unconfigure(config: pytest.Config) -> None:
+    import shutil
+
+    folder = getattr(config, "_boatland_cache", None)
+    if folder:
+        shutil.rmtree(folder, ignore_errors=True)
