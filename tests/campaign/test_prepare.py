@@ -95,11 +95,13 @@ def test_a_case_that_cannot_be_prepared_runs_as_before(mini, tmp_path, monkeypat
 
 
 @pytest.mark.slow
-def test_the_tables_of_every_case_are_made_together_beside_the_checks(mini, monkeypatch):
+def test_the_tables_of_every_case_are_made_together_beside_the_checks(mini, monkeypatch, tmp_path):
     """The campaign's pile tables (its two wave directions) come from one pass of the series in the
     background process (a real forked process, started before the checks); the campaign's own process
-    then makes none, and they are the tables it would have made itself, bit for bit."""
+    then makes none, and they are the tables it would have made itself, bit for bit. (An empty disk cache,
+    then none: the making is what is counted.)"""
     path, campaign = mini
+    monkeypatch.setenv("BOATLAND_CACHE_DIR", str(tmp_path / "cache"))
     monkeypatch.setattr(pd, "_TABLES", {})
     background = start_background(campaign, LOADERS, "local", 2)
     try:
@@ -108,6 +110,7 @@ def test_the_tables_of_every_case_are_made_together_beside_the_checks(mini, monk
         columns = pd._scattered_columns
         monkeypatch.setattr(pd, "_scattered_columns", lambda db, layout, k, th: passes.append(len(th)) or
                             columns(db, layout, k, th))
+        monkeypatch.setenv("BOATLAND_CACHE_DIR", "off")     # made here, not read back from the background's
         own = campaign_tables(campaign, resolve_database)
         assert passes == [2] and len(made) == len(own) == 2
         assert [(t.key, t.reduced.tobytes()) for t in made] == [(t.key, t.reduced.tobytes()) for t in own]
