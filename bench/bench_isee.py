@@ -4,6 +4,7 @@ Usage::
 
     python bench/bench_isee.py rare        # p ≈ 1e-4 per 30-min access to ±20 % (95 %), 2 workers, vs brute force
     python bench/bench_isee.py rare6       # p ≈ 1e-6 per 30-min access to ±10 % (95 %) (issue 28: ≤ 60 s)
+                                           # rare, rare6: [--before CHECKOUT] the same campaign on other code beside
     python bench/bench_isee.py table       # limiting Hs at 1.19e-3 per 30-min access, 8 Tp × 3 directions
     python bench/bench_isee.py scatter     # … the whole scatter: 16 Tp × 12 directions, each to ±3 % (issue 28: ≤ 10 min)
     python bench/bench_isee.py directions  # P(slip) of the linear model: friction circle vs square, M = 4 … 32
@@ -40,10 +41,11 @@ def campaign(tmp: Path, name: str, body: str) -> Path:
     return path
 
 
-def run_cli(camp: Path, store: Path, *extra) -> float:
+def run_cli(camp: Path, store: Path, *extra, code: Path = REPO) -> float:
     t0 = time.perf_counter()
     r = subprocess.run([sys.executable, "-m", "boatland", "campaign", str(camp), "-o", str(store), *extra],
-                       capture_output=True, text=True, env={**os.environ, "PYTHONPATH": str(REPO)})
+                       capture_output=True, text=True, env={**os.environ, "PYTHONPATH": str(code)},
+                       cwd=store.parent)   # not a checkout: `python -m` puts the working folder first on the path
     wall = time.perf_counter() - t0
     if r.returncode != 0:
         raise SystemExit(r.stderr)
@@ -68,7 +70,9 @@ def brute_force_time(camp: Path, hs: float, n: int = 40) -> float:
     return wall
 
 
-def rare(hs: float = 0.15, cov: float = 0.102) -> None:
+def rare(hs: float = 0.15, cov: float = 0.102, before: Path | None = None) -> None:
+    """``before``: another checkout of the code, whose run of the same campaign is timed right after this one's
+    (its store must hold the same estimate: the same samples, bit for bit)."""
     with tempfile.TemporaryDirectory() as d:
         tmp = Path(d)
         camp = campaign(tmp, "rare", f"""duration = 1800.0
@@ -84,6 +88,12 @@ max_samples = 4000
         with h5py.File(tmp / "rare.h5", "r") as f:
             r = f["stats"][0]
             cpu = float(f["trials"]["wall_time"].sum())
+        old = None
+        if before is not None:
+            wall_b = run_cli(camp, tmp / "before.h5", "--save-worst", "1", code=before)
+            with h5py.File(tmp / "before.h5", "r") as f:
+                rb = f["stats"][0]
+                old = (wall_b, float(f["trials"]["wall_time"].sum()), rb["first slip: P"] == r["first slip: P"])
         per = brute_force_time(camp, hs)
     p, lo, hi, cov, n = r["first slip: P"], r["first slip: P lo"], r["first slip: P hi"], r["first slip: CoV"], r["samples"]
     n_bf = math.ceil(norm_z() ** 2 * (1 - p) / ((norm_z() * cov) ** 2 * p))
@@ -91,6 +101,9 @@ max_samples = 4000
     print("|---|---|---|---|---|---|")
     print(f"| ISEE (`boatland campaign`, {os.cpu_count()} workers) | {hs} | {n} | {p:.3g} | [{lo:.3g}, {hi:.3g}] "
           f"(±{100 * 1.96 * cov:.1f} %) | {wall:.0f} (samples' CPU {cpu:.0f} s) |")
+    if old is not None:
+        print(f"| the same, code of {before.name} | {hs} | {n} | {'the same bits' if old[2] else 'DIFFERENT'} | | "
+              f"{old[0]:.0f} (samples' CPU {old[1]:.0f} s) |")
     print(f"| brute force, same interval | {hs} | {n_bf:,} | — | ±{100 * norm_z() * cov:.0f} % | {n_bf * per:,.0f} "
           f"(≈ {n_bf * per / 3600:,.0f} h; {per:.3f} s per trial measured) |")
     print(f"\nlinear: {r['linear first slip: P']:.3g} (CoV {r['linear first slip: CoV']:.3f}); largest elementary "
@@ -236,5 +249,6 @@ def screening() -> None:
 
 if __name__ == "__main__":
     what = sys.argv[1] if len(sys.argv) > 1 else "rare"
-    {"rare": rare, "rare6": lambda: rare(0.129, 0.051), "table": table, "scatter": scatter, "directions": directions,
-     "screening": screening}[what]()
+    before = Path(sys.argv[sys.argv.index("--before") + 1]).resolve() if "--before" in sys.argv else None
+    {"rare": lambda: rare(before=before), "rare6": lambda: rare(0.129, 0.051, before), "table": table,
+     "scatter": scatter, "directions": directions, "screening": screening}[what]()
