@@ -113,19 +113,21 @@ def cache_key(kind: str, parts: Iterable, code: Iterable[str]) -> str:
 def _read(path: Path, key: str, read: Callable):
     import h5py
 
-    try:
-        st = os.lstat(path)
+    try:   # no symlink followed, no blocking on a FIFO; what was checked is what is read (the same descriptor)
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_NONBLOCK", 0))
     except OSError:
         return None
-    if not stat.S_ISREG(st.st_mode) or st.st_size > MAX_ENTRY_BYTES:
-        return None                              # a symlink, FIFO, device or a foreign giant: not ours
-    try:
-        with h5py.File(path, "r") as f:
-            if f.attrs.get("boatland_cache_key") != key:
-                return None
-            value = read(f)
-    except Exception:                            # damaged or foreign: a miss, made again  # noqa: BLE001
-        return None
+    with os.fdopen(fd, "rb") as fh:
+        st = os.fstat(fh.fileno())
+        if not stat.S_ISREG(st.st_mode) or st.st_size > MAX_ENTRY_BYTES:
+            return None                          # a FIFO, device or a foreign giant: not ours
+        try:
+            with h5py.File(fh, "r") as f:
+                if f.attrs.get("boatland_cache_key") != key:
+                    return None
+                value = read(f)
+        except Exception:                        # damaged or foreign: a miss, made again  # noqa: BLE001
+            return None
     try:
         os.utime(path)                           # recently used
     except OSError:

@@ -299,11 +299,11 @@ def execute_sample(source: str, spec: SampleSpec, loaders, plain: bool = False) 
                 if spec.case not in ctx["checked"]:
                     check_radiation(setup, ctx["memory"][mkey])
                     ctx["checked"].add(spec.case)
-                akey = ("arrays", mkey, setup.dt)
-                if akey not in ctx["memory"]:                # the kernel's arrays: the same for every sample
-                    ctx["memory"][akey] = motion_arrays(setup, ctx["memory"][mkey])
+                akey = (mkey, setup.dt)
+                if akey not in ctx["arrays"]:                # the kernel's arrays: the same for every sample
+                    ctx["arrays"][akey] = motion_arrays(setup, ctx["memory"][mkey])
                 try:
-                    result = simulate(sc, db, arrays=ctx["memory"][akey], waves=model.sea.with_u(u), setup=setup,
+                    result = simulate(sc, db, arrays=ctx["arrays"][akey], waves=model.sea.with_u(u), setup=setup,
                                       gust_seed=sample_gust_seed(sc, ss))
                 except BlowUpError as exc:
                     result = exc.result

@@ -64,14 +64,14 @@ class CaseData:
 
 def worker_context(source: str, loaders) -> dict:
     """What a worker process keeps between the tasks of one campaign file ``source``: the campaign and
-    the databases, radiation memories and checked cases it has made (``{"campaign", "db", "memory",
-    "checked"}``; one campaign at a time)."""
+    the databases, radiation memories, kernel arrays and checked cases it has made (``{"campaign", "db",
+    "memory", "arrays", "checked"}``; one campaign at a time)."""
     load_scenario, load_database = loaders
     key = (source, loaders)
     if key not in _WORKER:
         campaign = load_campaign(source, load_scenario=load_scenario)
         _WORKER.clear()
-        _WORKER[key] = {"campaign": campaign, "db": {}, "memory": {}, "checked": set()}
+        _WORKER[key] = {"campaign": campaign, "db": {}, "memory": {}, "arrays": {}, "checked": set()}
     return _WORKER[key]
 
 

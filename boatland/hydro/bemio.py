@@ -40,7 +40,7 @@ from boatland import __version__
 from boatland.atomic import atomic_path
 from boatland.errors import HydroDataError
 from boatland.vessel.database import HullMesh, HydroDB, Provenance
-from boatland.vessel.radiation import read_memory, write_memory
+from boatland.vessel.radiation import padded_state_space, read_memory, write_memory
 
 __all__ = ["read_bemio", "write_bemio", "is_bemio", "write_drift", "write_radiation", "read_radiation"]
 
@@ -373,11 +373,7 @@ def write_radiation(path: str | Path, memory, rho: float) -> Path:
             f[f"{_IRF}/w"] = np.asarray(irf.check_band, dtype=float).reshape(-1, 1)
             write_memory(f.create_group(_XIRF), memory)
             if ss is not None:
-                n = max([fit.order for fit in ss.pairs.values()] + [1])
-                A = np.zeros((6, 6, n, n)); B = np.zeros((6, 6, n, 1)); C = np.zeros((6, 6, 1, n))
-                for (i, j), fit in ss.pairs.items():
-                    k = fit.order
-                    A[i, j, :k, :k], B[i, j, :k, 0], C[i, j, 0, :k] = fit.A, fit.B, fit.C
+                A, B, C = padded_state_space(ss)
                 f[f"{_SS}/A/all"], f[f"{_SS}/B/all"], f[f"{_SS}/C/all"] = A, B, C / rho
                 f[f"{_SS}/D/all"] = np.zeros((6, 6))
                 f[f"{_SS}/it"] = ss.orders.astype(float)

@@ -20,7 +20,7 @@ from boatland.vessel.database import HydroDB
 from boatland.reproducible import single_threaded
 
 __all__ = ["RadiationMemory", "radiation_memory", "memory_damping", "default_dt", "write_memory", "read_memory",
-           "TARGET_R2", "MAX_ORDER"]
+           "padded_state_space", "TARGET_R2", "MAX_ORDER"]
 
 #: Default state-space fit target and order cap. The R² of K(t) is dominated by the large low-frequency
 #: damping peak; the damping at a catamaran's heave and pitch resonances is a seventh of that peak, so
@@ -101,11 +101,7 @@ def write_memory(group, memory: RadiationMemory) -> None:
     x.attrs["notes"] = json.dumps(list(irf.notes))
     if ss is None:
         return
-    n = max([f.order for f in ss.pairs.values()] + [1])
-    A = np.zeros((6, 6, n, n)); B = np.zeros((6, 6, n, 1)); C = np.zeros((6, 6, 1, n))
-    for (i, j), f in ss.pairs.items():
-        k = f.order
-        A[i, j, :k, :k], B[i, j, :k, 0], C[i, j, 0, :k] = f.A, f.B, f.C
+    A, B, C = padded_state_space(ss)
     xs = x.create_group("state_space")
     xs["A"], xs["B"], xs["C"] = A, B, C
     xs["order"] = ss.orders
@@ -114,6 +110,17 @@ def write_memory(group, memory: RadiationMemory) -> None:
     xs.attrs["target_r2"] = ss.target_r2
     xs.attrs["max_order"] = ss.max_order
     xs.attrs["notes"] = json.dumps(list(ss.notes))
+
+
+def padded_state_space(ss: StateSpace) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The per-pair fits as BEMIO lays them out: A (6, 6, n, n), B (6, 6, n, 1), C (6, 6, 1, n), each pair's
+    system zero-padded to the largest order n (:attr:`StateSpace.orders` tells each one's)."""
+    n = max([f.order for f in ss.pairs.values()] + [1])
+    A = np.zeros((6, 6, n, n)); B = np.zeros((6, 6, n, 1)); C = np.zeros((6, 6, 1, n))
+    for (i, j), f in ss.pairs.items():
+        k = f.order
+        A[i, j, :k, :k], B[i, j, :k, 0], C[i, j, 0, :k] = f.A, f.B, f.C
+    return A, B, C
 
 
 def read_memory(group) -> RadiationMemory:

@@ -64,7 +64,7 @@ method = "isee"
 master_seed = 2026
 duration = 60.0
 [axes]
-"sea.Hs" = [{hs[0]}, {hs[1]}]
+"sea.Hs" = [{", ".join(str(h) for h in hs)}]
 "sea.relative_direction_deg" = [{direction}]
 [isee]
 target_cov = 0.08
@@ -85,6 +85,25 @@ def rows_of(dicts, names):
     return out
 
 
+def isee_run(pool, src, case, hs, names, incident="first slip", cov=0.08, most=400):
+    """ISEE samples of one level in batches of 20 until the estimate's CoV is ``cov`` (after ≥ 100) or ``most``
+    samples, as run_isee decides on a level: (estimate, rows)."""
+    isee = []
+    while True:
+        start = len(isee)
+        specs = [SampleSpec(trial_number(case, 0, k), case, 0, hs, k) for k in range(start, start + 20)]
+        isee += list(pool.map(execute_sample, [(str(src), s, LOADERS) for s in specs]))
+        est = run_estimates(rows_of(isee, names), names)[incident]
+        if (len(isee) >= 100 and est.cov <= cov) or len(isee) >= most:
+            return est, rows_of(isee, names)
+
+
+def plain_runs(pool, src, case, hs, names, samples):
+    """Plain Monte Carlo samples (u ~ N(0, I)) ``samples`` of one level: their rows."""
+    return rows_of(list(pool.map(execute_sample, [
+        (str(src), SampleSpec(trial_number(case, 0, k), case, 0, hs, k), LOADERS, True) for k in samples])), names)
+
+
 def compare(tmp_path, which):
     """(campaign file, [(Hs, ISEE estimate, ISEE rows, plain rows) per level])."""
     direction, levels = SEAS[which]
@@ -96,19 +115,8 @@ def compare(tmp_path, which):
     out = []
     with Executor("local", 2) as pool:
         for case, hs in enumerate(levels):
-            # ISEE: batches of 20 until the CoV is reached (as run_isee decides, here on one level)
-            isee = []
-            while True:
-                start = len(isee)
-                specs = [SampleSpec(trial_number(case, 0, k), case, 0, hs, k) for k in range(start, start + 20)]
-                isee += list(pool.map(execute_sample, [(str(src), s, LOADERS) for s in specs]))
-                est = run_estimates(rows_of(isee, names), names)["first slip"]
-                if (len(isee) >= 100 and est.cov <= camp.isee.target_cov) or len(isee) >= 400:
-                    break
-            plain = rows_of(list(pool.map(execute_sample, [
-                (str(src), SampleSpec(trial_number(case, 0, k), case, 0, hs, k), LOADERS, True)
-                for k in range(N_PLAIN)])), names)
-            out.append((hs, est, rows_of(isee, names), plain))
+            est, isee = isee_run(pool, src, case, hs, names, cov=camp.isee.target_cov)
+            out.append((hs, est, isee, plain_runs(pool, src, case, hs, names, range(N_PLAIN))))
     return src, out
 
 
@@ -167,26 +175,6 @@ RARE_HS = 0.19       # head seas, Tp 7 s, 60-s access: p ≈ 1e-3 (log p linear 
 N_RARE = 80_000
 
 
-def rare_campaign(tmp_path):
-    path = tmp_path / "rare.toml"
-    path.write_text(f"""
-name = "rare"
-scenario = "{REPO / 'scenarios' / 'ctv24_landing.toml'}"
-method = "isee"
-master_seed = 2026
-duration = 60.0
-[axes]
-"sea.Hs" = [{RARE_HS}]
-"sea.relative_direction_deg" = [180.0]
-[isee]
-target_cov = 0.08
-batch = 20
-min_samples = 100
-max_samples = 400
-""")
-    return path
-
-
 def in_sampling_domain(src: str, start: int, stop: int) -> list[int]:
     """The plain samples start … stop−1 (their own seeds, as ``execute_sample(plain=True)`` draws them) that
     exceed an elementary event of the sampling domain D in the linear model (0.7 ms each)."""
@@ -209,23 +197,13 @@ def test_head_seas_at_one_in_a_thousand_against_a_two_stage_brute_force(tmp_path
     outside D but after a slip in the settling, ≤ 1 % of the slips). Measured (2026-12-03, 35 s): brute force
     80/80,000 = 1.0e-3 [7.9e-4, 1.24e-3] (276 samples in D), ISEE 9.1e-4 [7.7e-4, 1.05e-3] (CoV 0.079,
     180 samples); at Hs 0.197 m 117/60,000 = 1.95e-3 against ISEE 1.96e-3."""
-    src = rare_campaign(tmp_path)
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        names = incident_names(load_campaign(src, load_scenario=load))
+    src = campaign(tmp_path, "rare", 180.0, (RARE_HS,))
+    names = ["first slip"]
     with Executor("local", 2) as pool:
-        isee = []
-        while True:
-            start = len(isee)
-            specs = [SampleSpec(trial_number(0, 0, k), 0, 0, RARE_HS, k) for k in range(start, start + 20)]
-            isee += list(pool.map(execute_sample, [(str(src), s, LOADERS) for s in specs]))
-            est = run_estimates(rows_of(isee, names), names)["first slip"]
-            if (len(isee) >= 100 and est.cov <= 0.08) or len(isee) >= 400:
-                break
+        est, _ = isee_run(pool, src, 0, RARE_HS, names)
         chunks = [(str(src), a, min(a + 5000, N_RARE)) for a in range(0, N_RARE, 5000)]
         in_d = [k for part in pool.map(in_sampling_domain, chunks) for k in part]
-        plain = rows_of(list(pool.map(execute_sample, [
-            (str(src), SampleSpec(trial_number(0, 0, k), 0, 0, RARE_HS, k), LOADERS, True) for k in in_d])), names)
+        plain = plain_runs(pool, src, 0, RARE_HS, names, in_d)
     assert (plain["status"] == 0).all() and (plain["isee_n"] > 0).all()   # the same samples, inside D
     hits = int(np.isfinite(plain["incident: first slip"]).sum())
     p, lo, hi = clopper_pearson(hits, N_RARE)
@@ -274,17 +252,8 @@ def test_a_slide_incident_against_brute_force(tmp_path):
         names = incident_names(load_campaign(src, load_scenario=load))
     assert INCIDENT in names
     with Executor("local", 2) as pool:
-        isee = []
-        while True:
-            start = len(isee)
-            specs = [SampleSpec(trial_number(0, 0, k), 0, 0, SLIDE_HS, k) for k in range(start, start + 20)]
-            isee += list(pool.map(execute_sample, [(str(src), s, LOADERS) for s in specs]))
-            est = run_estimates(rows_of(isee, names), names)[INCIDENT]
-            if (len(isee) >= 100 and est.cov <= 0.1) or len(isee) >= 600:
-                break
-        plain = rows_of(list(pool.map(execute_sample, [
-            (str(src), SampleSpec(trial_number(0, 0, k), 0, 0, SLIDE_HS, k), LOADERS, True) for k in range(N_SLIDE)])),
-            names)
+        est, _ = isee_run(pool, src, 0, SLIDE_HS, names, INCIDENT, cov=0.1, most=600)
+        plain = plain_runs(pool, src, 0, SLIDE_HS, names, range(N_SLIDE))
     assert (plain["status"] == 0).all()
     hit = np.isfinite(plain[f"incident: {INCIDENT}"])
     slip = np.isfinite(plain["incident: first slip"])   # in the access (a slide may go on from a slip before it)
