@@ -5,16 +5,16 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-__all__ = ["add_point_force", "angular_velocity", "euler_moment", "rotation_matrix"]
+__all__ = ["add_point_force", "angular_velocity", "euler_moment", "rotation_into", "rotation_matrix"]
 
 
-@njit(cache=True)
-def rotation_matrix(phi, theta, psi):
-    """Body → global rotation for roll φ, pitch θ, yaw ψ (z-y-x convention, R = Rz(ψ) Ry(θ) Rx(φ))."""
+@njit(cache=True, _nrt=False, forceinline=True)
+def rotation_into(phi, theta, psi, R):
+    """Body → global rotation for roll φ, pitch θ, yaw ψ (z-y-x convention, R = Rz(ψ) Ry(θ) Rx(φ)), written
+    into ``R`` (3, 3) — for a kernel's step loop, which must not allocate."""
     cf, sf = np.cos(phi), np.sin(phi)
     ct, st = np.cos(theta), np.sin(theta)
     cp, sp = np.cos(psi), np.sin(psi)
-    R = np.empty((3, 3))
     R[0, 0] = cp * ct
     R[0, 1] = cp * st * sf - sp * cf
     R[0, 2] = cp * st * cf + sp * sf
@@ -24,6 +24,14 @@ def rotation_matrix(phi, theta, psi):
     R[2, 0] = -st
     R[2, 1] = ct * sf
     R[2, 2] = ct * cf
+
+
+@njit(cache=True)
+def rotation_matrix(phi, theta, psi):
+    """Body → global rotation for roll φ, pitch θ, yaw ψ (z-y-x convention, R = Rz(ψ) Ry(θ) Rx(φ));
+    a new array (:func:`rotation_into` fills one)."""
+    R = np.empty((3, 3))
+    rotation_into(phi, theta, psi, R)
     return R
 
 

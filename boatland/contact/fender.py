@@ -296,8 +296,9 @@ def _contact_point(R, x, C, c):
 
 
 @njit(cache=True, _nrt=False, forceinline=True)
-def _point_kinematics(R, x, v, C, c, cs, kin):
-    """Kinematics of contact c at the state (x, v) with rotation ``R`` into row c of ``kin``."""
+def _point_kinematics(R, x, v, C, c, cs, kin, omega):
+    """Kinematics of contact c at the state (x, v) with rotation ``R`` into row c of ``kin``; ``omega``: the
+    body's angular velocity and its axes' turning (:func:`boatland.rigid.angular_velocity`)."""
     r, nrm, th, u, cen, dd, tpos, e, cp, off = kin
     mode, fdir, anchA, anchP, anchored, landed, slide, work = cs
     s, su, qx, qy, qz, cx, cy = _contact_point(R, x, C, c)
@@ -327,7 +328,7 @@ def _point_kinematics(R, x, v, C, c, cs, kin):
         past_end = False
     off[c] = past_end or qz < C.ZB[c] or qz > C.ZT[c]
     rx, ry, rz = qx - x[0], qy - x[1], qz - x[2]
-    wx, wy, wz, bx_, by_, bz_ = angular_velocity(R, v)
+    wx, wy, wz, bx_, by_, bz_ = omega
     Vx = v[0] + wy * rz - wz * ry
     Vy = v[1] + wz * rx - wx * rz
     Vz = v[2] + wx * ry - wy * rx
@@ -369,8 +370,9 @@ def contact_states(R, x, v, C, cs, kin):
     """Kinematics of every contact at the state (x, v) with rotation ``R`` = R(x₄, x₅, x₆), into ``kin``
     (see :func:`contact_workspace`): computed once per RK4 stage, shared by the stick–slip decision
     and the contact forces. ``cs`` is the contact state (:func:`contact_state_arrays`: the anchors)."""
+    omega = angular_velocity(R, v)  # the same for every contact
     for c in range(C.P.shape[0]):
-        _point_kinematics(R, x, v, C, c, cs, kin)
+        _point_kinematics(R, x, v, C, c, cs, kin, omega)
 
 
 @njit(cache=True, _nrt=False, forceinline=True)

@@ -19,8 +19,20 @@ interval :math:`[t_n, t_n + c\Delta t]`, trapezoid with the stage velocity:
 with :math:`w_0 = w_n = ½`. K is therefore sampled every Δt/2. The three history sums (c = 0, ½, 1) are
 computed in one pass per step over the stored velocities, for the significant DOF pairs only.
 
-State space: the fitted systems :math:`\dot z = A_r z + B_r \dot x_j`, :math:`\mu_{ij} = C_r z` are
-appended to the RK4 state, so they are consistent at every stage by construction.
+State space: the fitted modal systems :math:`\dot z = A_r z + B_r \dot x_j`, :math:`\mu_{ij} = C_r z`
+are integrated exactly over each step for a velocity linear between the step's ends (first-order hold,
+the "triangle-hold equivalent" of Franklin, Powell & Workman 1998, *Digital Control of Dynamic
+Systems*, §6.3.2; the integrals by Van Loan's block exponential, Van Loan 1978, IEEE Trans. AC 23(3)):
+
+.. math::
+    z(t_n + h) = \Phi(h) z_n + \Gamma_0(h)\,\dot x_n + \Gamma_1(h)\,\dot x(t_n + h), \qquad
+    \mu_c = \underbrace{C\,\Phi(c\Delta t)\, z_n}_{H_c\ \text{(fixed in the step)}}
+          + C\Gamma_0(c\Delta t)\,\dot x_n + C\Gamma_1(c\Delta t)\,\dot x_{stage}
+
+— the same split as the convolution's (a history fixed in the step, the current interval linear in the
+stage velocity), exact for the fitted K: no stability limit on Δt from fast poles, and the memory costs
+two passes over its states per step (the three history sums, then :math:`z_{n+1}` from the step's end
+velocity) instead of a derivative at each of the four stages.
 
 All arrays are SI, DOF order surge..yaw, body motions small (linear hydrodynamics) while positions
 of force points follow the exact rotation :math:`R(\phi,\theta,\psi)` (z-y-x Euler angles); the point
@@ -47,7 +59,7 @@ from boatland.contact.fender import (OFF, accumulate_sliding, contact_forces, co
                                      contact_workspace, decide_modes)
 from boatland.loads.drag import add_drag
 from boatland.loads.skipper import skipper_measure, skipper_state, skipper_thrust
-from boatland.rigid import add_point_force, rotation_matrix
+from boatland.rigid import add_point_force, rotation_into
 from boatland.rk4 import A_NEXT, B, C_HALF_STEPS
 
 __all__ = ["run_cummins", "STATUS_OK", "STATUS_NAN", "STATUS_RUNAWAY", "STATUS_SLID_OFF", "STATUS_MESSAGES"]
@@ -140,63 +152,65 @@ def _history(vbuf, head, count, Kh, pairs_i, pairs_j, dt, H):
 _U1 = np.uint64(1)
 
 
+@njit(cache=True, _nrt=False, forceinline=True, fastmath={"reassoc"})
+def _ss_history(z, ss_P, rows, H):
+    r"""State-space history sums :math:`H_c = C\,\Phi(c\Delta t)\,z_n` for c = 0, ½, 1 (rows of ``H`` (3, 6)).
+
+    ``ss_P`` (3, N) holds each state's output coefficient at the three stage times, the states of each
+    output DOF contiguous (``rows``: first state and count). The sums may be reassociated (``reassoc``,
+    this function only) so that they run in SIMD lanes: the order is fixed by the compiled code, the
+    same on every run, worker and core count of this machine.
+    """
+    for i in range(6):
+        s = np.uint64(rows[i, 0])
+        end = s + np.uint64(rows[i, 1])
+        h0 = 0.0
+        h1 = 0.0
+        h2 = 0.0
+        while s < end:
+            zs = z[s]
+            h0 += ss_P[0, s] * zs
+            h1 += ss_P[1, s] * zs
+            h2 += ss_P[2, s] * zs
+            s += _U1
+        H[0, i] = h0
+        H[1, i] = h1
+        H[2, i] = h2
+
+
 @njit(cache=True, _nrt=False, forceinline=True)
-def _state_space(v, z, ss_A, ss_B, ss_C, ss_seg, rows, st, kz, F):
-    r"""Modal state-space memory: derivative into row ``st`` of ``kz`` and the output subtracted from ``F``.
-
-    .. math::
-        \dot z_s = (a_s z_s + b_s \dot x_{j(s)}) + a^{\uparrow}_s z_{s+1} + a^{\downarrow}_s z_{s-1},
-        \qquad F_i \mathrel{-}= c_s z_s \ \text{for the states } s \text{ of output DOF } i \text{ in order}
-
-    in the layout of :func:`boatland.trial.motion.modal_layout`: a complex pair's partner is the state
-    above or below (the other coefficient zero), each run of ``ss_seg`` shares its input DOF, and the
-    six output sums (``rows``: first state and count per output DOF) run side by side. Every loop is
-    contiguous with unsigned indices, so the derivative vectorises.
+def _ss_advance(z, z_next, ss_E, ss_seg, v_n, v):
+    r"""The states at the step's end: :math:`z_{n+1} = \Phi(\Delta t) z_n + \Gamma_0 \dot x_{j,n} +
+    \Gamma_1 \dot x_{j,n+1}` into ``z_next``, state by state in the modal layout of
+    :func:`boatland.trial.motion.modal_layout` (``ss_E`` rows: Φ's diagonal, its coefficient of the state
+    above and of the state below — a complex pair's partner —, Γ₀, Γ₁). Each run of ``ss_seg`` shares its
+    input DOF; every loop is contiguous with unsigned indices, so it vectorises.
     """
     for g in range(ss_seg.shape[0]):
-        vj = v[ss_seg[g, 2]]
+        j = ss_seg[g, 2]
+        a = v_n[j]
+        b = v[j]
         s = np.uint64(ss_seg[g, 0])
         end = np.uint64(ss_seg[g, 1])
         while s < end:
-            kz[st, s] = ((ss_A[0, s] * z[s] + ss_B[s] * vj) + ss_A[1, s] * z[s + _U1]) + ss_A[2, s] * z[s - _U1]
+            z_next[s] = (((ss_E[0, s] * z[s] + ss_E[1, s] * z[s + _U1]) + ss_E[2, s] * z[s - _U1])
+                         + ss_E[3, s] * a) + ss_E[4, s] * b
             s += _U1
-    o0, o1, o2 = np.uint64(rows[0, 0]), np.uint64(rows[1, 0]), np.uint64(rows[2, 0])
-    o3, o4, o5 = np.uint64(rows[3, 0]), np.uint64(rows[4, 0]), np.uint64(rows[5, 0])
-    n0, n1, n2 = np.uint64(rows[0, 1]), np.uint64(rows[1, 1]), np.uint64(rows[2, 1])
-    n3, n4, n5 = np.uint64(rows[3, 1]), np.uint64(rows[4, 1]), np.uint64(rows[5, 1])
-    longest = max(n0, n1, n2, n3, n4, n5)
-    # six sums written out, not a loop over an array: each stays in a register and the six dependent
-    # chains run side by side (an f[6] array would pass every subtraction through memory)
-    f0, f1, f2, f3, f4, f5 = F[0], F[1], F[2], F[3], F[4], F[5]
-    r = np.uint64(0)
-    while r < longest:
-        if r < n0:
-            f0 -= ss_C[o0 + r] * z[o0 + r]
-        if r < n1:
-            f1 -= ss_C[o1 + r] * z[o1 + r]
-        if r < n2:
-            f2 -= ss_C[o2 + r] * z[o2 + r]
-        if r < n3:
-            f3 -= ss_C[o3 + r] * z[o3 + r]
-        if r < n4:
-            f4 -= ss_C[o4 + r] * z[o4 + r]
-        if r < n5:
-            f5 -= ss_C[o5 + r] * z[o5 + r]
-        r += _U1
-    F[0], F[1], F[2], F[3], F[4], F[5] = f0, f1, f2, f3, f4, f5
 
 
 @njit(cache=True, _nrt=False, forceinline=True)
-def _forces(t_idx, c2, x, v, z, v_n, R, dt, H, C, Bv, Bq, F_ext, T, push, flow, conv, memory, st, kz, F):
-    """All forces but the contacts, into ``F``; the state-space derivative into row ``st`` of ``kz``.
+def _forces(t_idx, c2, x, v, v_n, R, H, C, Bv, Bq, F_ext, T, push, flow, memory, F):
+    """All forces but the contacts, into ``F``.
 
     The stage is ``c2`` half steps into the step (0, 1, 2: c = 0, ½, 1), at half-step index ``t_idx``;
-    ``v_n`` is the velocity at the step start, ``H`` (3, 6) the history sums of the step. ``T`` is the
-    push [N] at this stage, ``push`` = (r_p, e_T) its body point and direction; ``flow`` = (on, U, table,
-    par, ramp, strips) the current's drag on the hull's strips (:func:`boatland.loads.drag.add_drag`) when
-    ``on``, its speed × ramp at the half steps.
+    ``v_n`` is the velocity at the step start, ``H`` (3, 6) the memory's history sums of the step. The
+    memory of the current interval is linear in the stage velocity: :math:`G_0 \\dot x_{j,n} + G_1 \\dot
+    x_j` per pair (``memory`` = (pairs_i, pairs_j, G (npairs, 3, 2)); the convolution's trapezoid or the
+    state space's exact hold, see the module). ``T`` is the push [N] at this stage, ``push`` = (r_p, e_T)
+    its body point and direction; ``flow`` = (on, U, table, par, ramp, strips) the current's drag on the
+    hull's strips (:func:`boatland.loads.drag.add_drag`) when ``on``, its speed × ramp at the half steps.
     """
-    Kh, pairs_i, pairs_j, ss_A, ss_B, ss_C, ss_seg, ss_rows = memory
+    pairs_i, pairs_j, G = memory
     for d in range(6):
         F[d] = F_ext[t_idx, d] - Bv[d] * v[d] - Bq[d] * abs(v[d]) * v[d]
         for e in range(6):
@@ -205,23 +219,19 @@ def _forces(t_idx, c2, x, v, z, v_n, R, dt, H, C, Bv, Bq, F_ext, T, push, flow, 
         _thrust(R, T, push[0], push[1], F)
     if flow[0]:
         add_drag(R, v, flow[1], flow[4][t_idx], flow[2], flow[3], flow[5], F)
-    if conv:
-        cdt = 0.5 * c2 * dt
+    if c2 > 0:
         for p in range(pairs_i.shape[0]):
             i, j = pairs_i[p], pairs_j[p]
-            cur = 0.5 * cdt * (Kh[p, c2] * v_n[j] + Kh[p, 0] * v[j]) if c2 > 0 else 0.0
-            F[i] -= cur
-        for d in range(6):
-            F[d] -= H[c2, d]
-    else:
-        _state_space(v, z, ss_A, ss_B, ss_C, ss_seg, ss_rows, st, kz, F)
+            F[i] -= G[p, c2, 0] * v_n[j] + G[p, c2, 1] * v[j]
+    for d in range(6):
+        F[d] -= H[c2, d]
 
 
 @njit(cache=True, _nrt=False, forceinline=True)
-def _stage(n, st, x, v, z, v_n, R, dt, H, Mt_inv, C, Bv, Bq, F_ext, T, push, flow, conv, memory, ct, cs, ws,
-           v_tol, kv, kz, scratch, records):
-    """Stage ``st`` (0–3) of step ``n`` at the stage state (x, v, z): accelerations into row ``st`` of
-    ``kv`` (4, 6) and the state-space derivative into row ``st`` of ``kz`` (4, ns), contacts included.
+def _stage(n, st, x, v, v_n, R, dt, H, Mt_inv, C, Bv, Bq, F_ext, T, push, flow, memory, ct, cs, ws, v_tol, kv,
+           scratch, records):
+    """Stage ``st`` (0–3) of step ``n`` at the stage state (x, v): accelerations into row ``st`` of ``kv``
+    (4, 6), contacts included.
 
     ``v_n`` is the velocity at the step start, ``R`` the body rotation at the stage state (thrust
     direction, contact points), ``T`` the push at the stage, ``ct`` the contacts (:class:`boatland.contact.fender.Contacts`) and
@@ -235,7 +245,7 @@ def _stage(n, st, x, v, z, v_n, R, dt, H, Mt_inv, C, Bv, Bq, F_ext, T, push, flo
     kin, solve, F_try = ws
     f_t, f_n, needed, available = records
     acc, F = scratch
-    _forces(t_idx, c2, x, v, z, v_n, R, dt, H, C, Bv, Bq, F_ext, T, push, flow, conv, memory, st, kz, F)
+    _forces(t_idx, c2, x, v, v_n, R, H, C, Bv, Bq, F_ext, T, push, flow, memory, F)
     if ct.P.shape[0] == 0:
         for d in range(6):
             a = 0.0
@@ -252,15 +262,13 @@ def _stage(n, st, x, v, z, v_n, R, dt, H, Mt_inv, C, Bv, Bq, F_ext, T, push, flo
 
 
 @njit(cache=True, _nrt=False, forceinline=True)
-def _trial_state(st, h, x, v, z, kx, kv, kz, xs, vs, zs):
-    """State (xs, vs, zs) of RK4 stage ``st``: the step start (x, v, z) for st = 0, else
-    (x, v, z) + h (kx, kv, kz)[st − 1] after kx[st − 1] = the previous stage's velocity ``vs``."""
+def _trial_state(st, h, x, v, kx, kv, xs, vs):
+    """State (xs, vs) of RK4 stage ``st``: the step start (x, v) for st = 0, else (x, v) + h (kx, kv)[st − 1]
+    after kx[st − 1] = the previous stage's velocity ``vs``."""
     if st == 0:
         for d in range(6):
             xs[d] = x[d]
             vs[d] = v[d]
-        for q in range(z.shape[0]):
-            zs[q] = z[q]
         return
     k = st - 1
     for d in range(6):
@@ -268,8 +276,6 @@ def _trial_state(st, h, x, v, z, kx, kv, kz, xs, vs, zs):
     for d in range(6):
         xs[d] = x[d] + h * kx[k, d]
         vs[d] = v[d] + h * kv[k, d]
-    for q in range(z.shape[0]):
-        zs[q] = z[q] + h * kz[k, q]
 
 
 @njit(cache=True, _nrt=False, forceinline=True)
@@ -323,7 +329,7 @@ def _wait_for_gate(gate, n):
 
 @njit(cache=True, nogil=True)
 def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, e_T, skipper, flow, x0, v0,
-                conv, Kh, pairs_i, pairs_j, n_hist, ss_A, ss_B, ss_C, ss_seg, ss_rows,
+                conv, Kh, pairs_i, pairs_j, G, n_hist, ss_E, ss_P, ss_seg, ss_rows,
                 ct, v_tol, limit_trans, limit_rot, out_x, out_v, out_mode, out_fn, out_ft, out_need,
                 out_avail, out_tpos, out_slide, out_work, out_thrust, progress, gate):
     """Integrate the Cummins equation with classic RK4; returns ``(status, last_step)``.
@@ -361,10 +367,14 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, e_T, skipper
     conv : bool
         True: convolution memory with ``Kh`` (npairs, nK2) = K(k Δt/2) of the pairs
         (``pairs_i``, ``pairs_j``) over ``n_hist`` past steps. False: state space in modal
-        (block-diagonal) form, laid out by :func:`boatland.trial.motion.modal_layout`: ``ss_A`` (3, N)
-        each state's coefficient of itself, of the state above and of the state below, ``ss_B`` (N,),
-        ``ss_C`` (N,), ``ss_seg`` (n_seg, 3) runs [start, end) sharing an input DOF, ``ss_rows`` (6, 2)
-        first state and number of states per output DOF (N = states + 2 zero guards).
+        (block-diagonal) form discretised exactly over the step, laid out by
+        :func:`boatland.trial.motion.modal_layout`: ``ss_E`` (5, N) each state's Φ(Δt) coefficient of
+        itself, of the state above and of the state below, its Γ₀ and Γ₁; ``ss_P`` (3, N) its output
+        coefficient C Φ(cΔt) at c = 0, ½, 1; ``ss_seg`` (n_seg, 3) runs [start, end) sharing an input DOF,
+        ``ss_rows`` (6, 2) first state and number of states per output DOF (N = states + 2 zero guards).
+    G : (npairs, 3, 2)
+        The memory of the current interval at the stage c2 half steps into the step:
+        ``G[p, c2, 0] v_n[j] + G[p, c2, 1] v_stage[j]`` on output ``i`` of pair p (zero at c2 = 0).
     ct : Contacts
         The fender contacts in the local frame (:class:`boatland.contact.fender.Contacts`; Nc = 0 for none).
     v_tol : float
@@ -404,11 +414,12 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, e_T, skipper
     ws = contact_workspace(nc, ct.sideways)
     tpos = ws[0][6]  # positions of the contacts on the landing at the stage state (contact_states)
     records = (np.zeros((nc, 2)), np.zeros(nc), np.zeros(nc), np.zeros(nc))  # f_t, f_n, needed, available
-    n_s = ss_B.shape[0]
-    memory = (Kh, pairs_i, pairs_j, ss_A, ss_B, ss_C, ss_seg, ss_rows)
+    memory = (pairs_i, pairs_j, G)
     x = x0.copy()
     v = v0.copy()
-    z = np.zeros(n_s)
+    v_n = v0.copy()  # the velocity at the step start, kept for the state space's advance
+    z = np.zeros(ss_E.shape[1])  # state-space memory at the step start (zero guards at both ends)
+    z_next = np.zeros(ss_E.shape[1])
     nb = max(n_hist + 1, 1)
     vbuf = np.zeros((2 * nb, 6))  # mirrored ring buffer of the velocities (see _history)
     head = 0
@@ -423,21 +434,24 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, e_T, skipper
     held = False
     T_held = 0.0
     scratch = (np.zeros(6), np.zeros(6))  # acc, F of one stage
-    kx, kv, kz = np.zeros((4, 6)), np.zeros((4, 6)), np.zeros((4, n_s))  # stage derivatives
-    xs, vs, zs = np.zeros(6), np.zeros(6), np.zeros(n_s)  # stage state
+    kx, kv = np.zeros((4, 6)), np.zeros((4, 6))  # stage derivatives
+    R = np.zeros((3, 3))  # body rotation at the stage state
+    xs, vs = np.zeros(6), np.zeros(6)  # stage state
     for n in range(n_steps + 1):
         progress[0] = n
         if conv:
             _history(vbuf, head, count, Kh, pairs_i, pairs_j, dt, H)
+        else:
+            _ss_history(z, ss_P, ss_rows, H)
         if controlled:
             held, T_held = skipper_thrust(n, thrust, skipper, sk_buf, sk_state)
         for st in range(4):
-            _trial_state(st, _A_NEXT[st - 1] * dt, x, v, z, kx, kv, kz, xs, vs, zs)
-            R = rotation_matrix(xs[3], xs[4], xs[5])  # once per stage: thrust direction, contact points
+            _trial_state(st, _A_NEXT[st - 1] * dt, x, v, kx, kv, xs, vs)
+            rotation_into(xs[3], xs[4], xs[5], R)  # once per stage: thrust direction, contact points
             T = T_held if held else thrust[2 * n + _C2[st]]
             # stage 1 decides the contact modes of the step and is the step-start record
-            _stage(n, st, xs, vs, zs, v, R, dt, H, Mt_inv, C, Bv, Bq, F_ext, T, push, flow, conv, memory, ct, cs,
-                   ws, v_tol, kv, kz, scratch, records)
+            _stage(n, st, xs, vs, v, R, dt, H, Mt_inv, C, Bv, Bq, F_ext, T, push, flow, memory, ct, cs, ws, v_tol,
+                   kv, scratch, records)
             if st == 0:
                 _record(n, x, v, cs, records, tpos, out_x, out_v, out_mode, out_fn, out_ft, out_need,
                         out_avail, out_tpos, out_slide, out_work)
@@ -460,12 +474,14 @@ def run_cummins(dt, n_steps, Mt_inv, C, Bv, Bq, F_ext, thrust, r_p, e_T, skipper
             kx[3, d] = vs[d]
         bad = False
         for d in range(6):
+            v_n[d] = v[d]
             x[d] += dt / 6.0 * (kx[0, d] + 2 * kx[1, d] + 2 * kx[2, d] + kx[3, d])
             v[d] += dt / 6.0 * (kv[0, d] + 2 * kv[1, d] + 2 * kv[2, d] + kv[3, d])
             if not (np.isfinite(x[d]) and np.isfinite(v[d])):
                 bad = True
-        for q in range(n_s):
-            z[q] += dt / 6.0 * (kz[0, q] + 2 * kz[1, q] + 2 * kz[2, q] + kz[3, q])
+        if not conv:
+            _ss_advance(z, z_next, ss_E, ss_seg, v_n, v)
+            z, z_next = z_next, z
         if bad:
             out_x[n + 1, :] = x
             out_v[n + 1, :] = v

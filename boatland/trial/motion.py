@@ -24,24 +24,29 @@ class MotionArrays:
     Kh: np.ndarray
     pairs_i: np.ndarray
     pairs_j: np.ndarray
+    G: np.ndarray
     n_hist: int
-    ss_A: np.ndarray
-    ss_B: np.ndarray
-    ss_C: np.ndarray
+    ss_E: np.ndarray
+    ss_P: np.ndarray
     ss_seg: np.ndarray
     ss_rows: np.ndarray
+
+    def __post_init__(self):
+        n = self.pairs_i.shape[0]
+        if self.pairs_j.shape != (n,) or self.G.shape != (n, 3, 2) or (self.conv and self.Kh.shape[0] != n):
+            raise ValueError(f"pairs_i, pairs_j, G (and Kh for the convolution) must describe the same {n} pairs")
 
     @property
     def n_states(self) -> int:
         """Number of state-space memory states (the guards of :func:`modal_layout` not counted)."""
-        return self.ss_B.shape[0] - 2
+        return self.ss_E.shape[1] - 2
 
     @classmethod
     def without_memory(cls, Mt, C) -> "MotionArrays":
         """A system with no radiation memory (K ≡ 0): (M + A∞) x'' + C x = F — for analytic checks."""
         e = np.zeros(0, dtype=np.int64)
         return cls(np.linalg.inv(np.asarray(Mt, dtype=float)), np.asarray(C, dtype=float).copy(), True,
-                   np.zeros((0, 1)), e, e, 0, *_no_state_space())
+                   np.zeros((0, 1)), e, e, np.zeros((0, 3, 2)), 0, *_no_state_space())
 
     @staticmethod
     def allocate_outputs(n_steps: int, nc: int) -> dict:
@@ -116,7 +121,7 @@ class MotionArrays:
         status, last = run_cummins(
             float(dt), int(n_steps), self.Mt_inv, self.C, vec(Bv), vec(Bq), F_ext, thrust,
             np.asarray(r_p, dtype=float), e_T, sk, flow, vec(x0), vec(v0), self.conv, self.Kh, self.pairs_i,
-            self.pairs_j, self.n_hist, self.ss_A, self.ss_B, self.ss_C, self.ss_seg, self.ss_rows, contacts,
+            self.pairs_j, self.G, self.n_hist, self.ss_E, self.ss_P, self.ss_seg, self.ss_rows, contacts,
             float(v_tol), float(limit_trans), float(limit_rot), out["x"], out["v"], out["mode"], out["fn"],
             out["ft"], out["needed"], out["available"], out["tpos"], out["slide"], out["work"], out["thrust"],
             progress, gate)
@@ -133,20 +138,65 @@ def _resample_irf(memory: RadiationMemory, pairs, h: float, t_max: float) -> np.
     return np.array([np.interp(t, irf.t, irf.K[i, j], right=0.0) for i, j in pairs]).reshape(len(pairs), t.size)
 
 
-def rk4_amplification(z: np.ndarray) -> np.ndarray:
-    """|R(z)| of classic RK4 on ẏ = p y with z = p Δt: R = 1 + z + z²/2 + z³/6 + z⁴/24."""
-    return np.abs(1 + z + z ** 2 / 2 + z ** 3 / 6 + z ** 4 / 24)
+def _trapezoid_interval(Kh: np.ndarray, dt: float) -> np.ndarray:
+    """G of the convolution: its current interval [t_n, t_n + cΔt] by the trapezoid,
+    (cΔt / 2) [K(cΔt) v_n + K(0) v_stage] at c = 0, ½, 1 (see :mod:`boatland.integrate.cummins`)."""
+    G = np.zeros((Kh.shape[0], 3, 2))
+    for c2 in (1, 2):
+        half = 0.5 * (0.5 * c2 * dt)
+        G[:, c2, 0] = half * Kh[:, c2]
+        G[:, c2, 1] = half * Kh[:, 0]
+    return G
 
 
-def _check_rk4_stable(blocks, dt: float) -> None:
-    """Every state-space pole must lie in RK4's stability region at ``dt`` (|R(pΔt)| ≤ 1)."""
-    for i, j, f in blocks:
-        p = np.linalg.eigvals(f.A)
-        if np.any(rk4_amplification(p * dt) > 1.0):
-            fastest = float(np.max(np.abs(p)))
-            raise ValueError(f"the state-space fit of pair ({i + 1},{j + 1}) has a pole of |p| = {fastest:.3g} "
-                             f"rad/s, outside RK4's stability region at dt = {dt:g} s; use dt ≤ "
-                             f"{2.5 / fastest:.3g} s or the convolution")
+def hold_discretisation(a: np.ndarray, b: np.ndarray, h: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    r"""Exact step of :math:`\dot z = a z + b u` over ``h`` for u linear between its values at the ends.
+
+    .. math::
+        z(h) = \Phi z(0) + \Gamma_0 u(0) + \Gamma_1 u(h), \quad \Phi = e^{ah}, \quad
+        \Gamma_0 = \int_0^h e^{a\sigma} b\,d\sigma - \Gamma_1, \quad
+        \Gamma_1 = \frac{1}{h}\int_0^h e^{a\sigma} b\,(h - \sigma)\,d\sigma
+
+    (first-order hold, Franklin, Powell & Workman 1998, *Digital Control of Dynamic Systems* §6.3.2),
+    the integrals read off one exponential of the augmented matrix
+    :math:`\begin{bmatrix} a & b & 0\\ 0 & 0 & 1\\ 0 & 0 & 0\end{bmatrix} h` (Van Loan 1978, IEEE Trans.
+    Automatic Control 23(3), "Computing integrals involving the matrix exponential").
+
+    Parameters
+    ----------
+    a : (k, k)
+        A modal block (k = 1 or 2).
+    b : (k,)
+    h : float
+
+    Returns
+    -------
+    Phi : (k, k); Gamma0, Gamma1 : (k,)
+    """
+    from scipy.linalg import expm
+
+    k = a.shape[0]
+    M = np.zeros((k + 2, k + 2))
+    M[:k, :k], M[:k, k], M[k, k + 1] = a * h, b * h, h
+    E = expm(M)
+    g1 = E[:k, k + 1] / h
+    return E[:k, :k], E[:k, k] - g1, g1
+
+
+def _modal_blocks(A: np.ndarray):
+    """The diagonal blocks of a modal realisation: lists of state indices (one real pole or a complex pair)."""
+    n = A.shape[0]
+    blocks, s_ = [], 0
+    while s_ < n:
+        if s_ + 1 < n and (A[s_, s_ + 1] != 0.0 or A[s_ + 1, s_] != 0.0):
+            blocks.append([s_, s_ + 1]); s_ += 2
+        else:
+            blocks.append([s_]); s_ += 1
+    for q in blocks:  # nothing outside the blocks
+        rest = np.delete(A[q], q, axis=1)
+        if np.any(rest != 0.0):
+            raise ValueError("state-space blocks larger than 2×2: not a modal realisation")
+    return blocks
 
 
 def compile_motion(db: HydroDB, memory: RadiationMemory, dt: float, *, method: str = "convolution",
@@ -171,80 +221,90 @@ def compile_motion(db: HydroDB, memory: RadiationMemory, dt: float, *, method: s
     Mt = 0.5 * (Mt + Mt.T)  # A∞ is symmetric in theory; BEM round-off leaves ~1e-5 relative asymmetry
     pairs = [(i, j) for i in range(6) for j in range(6) if memory.irf.significant[i, j]]
     T_K = float(memory.irf.t[-1]) if memory_length is None else float(memory_length)
-    empty_i = np.zeros(0, dtype=np.int64)
+    pi = np.array([p[0] for p in pairs], dtype=np.int64)
+    pj = np.array([p[1] for p in pairs], dtype=np.int64)
     if method == "convolution":
         Kh = _resample_irf(memory, pairs, dt / 2, T_K)
-        pi = np.array([p[0] for p in pairs], dtype=np.int64)
-        pj = np.array([p[1] for p in pairs], dtype=np.int64)
-        return MotionArrays(np.linalg.inv(Mt), db.C.copy(), True, Kh, pi, pj, int(round(T_K / dt)),
-                            *_no_state_space())
+        return MotionArrays(np.linalg.inv(Mt), db.C.copy(), True, Kh, pi, pj, _trapezoid_interval(Kh, dt),
+                            int(round(T_K / dt)), *_no_state_space())
     if method != "state_space":
         raise ValueError(f"method must be 'convolution' or 'state_space', got {method!r}")
     ss = memory.state_space
     if ss is None:
         raise ValueError("no state-space fit in this radiation memory")
-    blocks = [(i, j, f) for (i, j), f in sorted(ss.pairs.items()) if f.order > 0]
-    _check_rk4_stable(blocks, dt)
-    n = sum(f.order for _, _, f in blocks)
-    A = np.zeros((n, n)); B = np.zeros(n); Cr = np.zeros(n)
-    s_in = np.zeros(n, dtype=np.int64); s_out = np.zeros(n, dtype=np.int64)
-    k = 0
-    for i, j, f in blocks:
-        o = f.order
-        A[k:k + o, k:k + o], B[k:k + o], Cr[k:k + o] = f.A, f.B, f.C
-        s_in[k:k + o], s_out[k:k + o] = j, i
-        k += o
-    # modal form: every state couples to itself and at most one partner (2×2 block of a complex pair)
-    A2 = np.zeros((n, 2))
-    pair = np.full(n, -1, dtype=np.int64)
-    for s_ in range(n):
-        A2[s_, 0] = A[s_, s_]
-        others = [q for q in np.flatnonzero(A[s_]) if q != s_]
-        if len(others) > 1:
-            raise ValueError("state-space blocks larger than 2×2: not a modal realisation")
-        if others:
-            pair[s_], A2[s_, 1] = others[0], A[s_, others[0]]
-    ss_A, ss_B, ss_C, ss_seg, rows = modal_layout(A2, B, Cr, s_in, s_out, pair)
-    return MotionArrays(np.linalg.inv(Mt), db.C.copy(), False, np.zeros((0, 1)), empty_i, empty_i, 0,
-                        ss_A, ss_B, ss_C, ss_seg, rows)
+    # every block of every pair's modal system, discretised exactly at Δt/2 and Δt (hold_discretisation)
+    E, P, s_in, s_out, partner = [], [], [], [], []
+    G = np.zeros((len(pairs), 3, 2))
+    for p, (i, j) in enumerate(pairs):
+        f = ss.pairs.get((i, j))
+        if f is None or f.order == 0:
+            continue
+        for q in _modal_blocks(f.A):
+            a_, b_, c_ = f.A[np.ix_(q, q)], f.B[q], f.C[q]
+            Phi_h, g0_h, g1_h = hold_discretisation(a_, b_, dt / 2)
+            Phi, g0, g1 = hold_discretisation(a_, b_, dt)
+            G[p, 1] += (c_ @ g0_h, c_ @ g1_h)
+            G[p, 2] += (c_ @ g0, c_ @ g1)
+            for r, s_ in enumerate(q):
+                other = Phi[r, 1 - r] if len(q) == 2 else 0.0
+                E.append((Phi[r, r], other, g0[r], g1[r]))
+                P.append((c_[r], (c_ @ Phi_h)[r], (c_ @ Phi)[r]))
+                s_in.append(j); s_out.append(i)
+                partner.append(len(E) + (1 if r == 0 else -1) - 1 if len(q) == 2 else -1)
+    n = len(E)
+    ss_E, ss_P, ss_seg, rows = modal_layout(np.array(E).reshape(n, 4), np.array(P).reshape(n, 3),
+                                           np.array(s_in, dtype=np.int64), np.array(s_out, dtype=np.int64),
+                                           np.array(partner, dtype=np.int64))
+    return MotionArrays(np.linalg.inv(Mt), db.C.copy(), False, np.zeros((0, 1)), pi, pj, G, 0,
+                        ss_E, ss_P, ss_seg, rows)
 
 
-def modal_layout(A2, B, C, s_in, s_out, pair):
-    r"""The kernel's layout of a modal state-space memory (:func:`boatland.integrate.cummins._state_space`).
+def modal_layout(E, P, s_in, s_out, pair):
+    r"""The kernel's layout of a discretised modal state-space memory (:func:`boatland.integrate.cummins._ss_advance`,
+    :func:`boatland.integrate.cummins._ss_history`).
 
-    The states of the fitted systems :math:`\dot z_s = a_s z_s + a'_s z_{q(s)} + b_s \dot x_{j(s)}`,
-    :math:`\mu_i = \sum_{s: i(s) = i} c_s z_s` (``pair`` q(s) = −1: a real pole) keep their order,
-    grouped by output DOF, between one zero guard state at each end (length N = n + 2). A complex pair's
-    partner must be its neighbour, so the kernel reads it as the state above or below (``ss_A`` rows 1,
-    2; the other row 0) in contiguous, vectorisable loops without an index array.
+    The states of the discretised systems :math:`z_s \leftarrow \phi_s z_s + \phi'_s z_{q(s)} + \gamma_{0,s}
+    \dot x_{j(s),n} + \gamma_{1,s} \dot x_{j(s),n+1}`, :math:`H_{c,i} = \sum_{s: i(s) = i} p_{c,s} z_s`
+    (``pair`` q(s) = −1: a real pole) keep their order, grouped by output DOF, between one zero guard
+    state at each end (length N = n + 2). A complex pair's partner must be its neighbour, so the kernel
+    reads it as the state above or below (``ss_E`` rows 1, 2; the other row 0) in contiguous,
+    vectorisable loops without an index array. A zero coefficient adds an exact zero and the guards stay
+    zero.
 
-    The arithmetic of every state and every output sum is unchanged (same operations in the same
-    order): a zero coefficient adds an exact zero and the guards stay zero.
+    Parameters
+    ----------
+    E : (n, 4)
+        Per state: φ (its own coefficient), φ' (its partner's), γ₀, γ₁.
+    P : (n, 3)
+        Per state: its output coefficient at c = 0, ½, 1.
+    s_in, s_out, pair : (n,) int64
 
     Returns
     -------
-    ss_A : (3, N)
-        Coefficient of the state itself, of the state above, of the state below (rows: each contiguous).
-    ss_B, ss_C : (N,)
-        Input and output coefficients.
+    ss_E : (5, N)
+        Coefficient of the state itself, of the state above, of the state below, γ₀, γ₁ (rows contiguous).
+    ss_P : (3, N)
+        Output coefficients at c = 0, ½, 1.
     ss_seg : (n_seg, 3) int64
-        Runs ``[start, end)`` of states sharing an input DOF (third column), covering every state once.
+        Runs ``[start, end)`` of states sharing an input and an output DOF (third column: the input),
+        covering every state once.
     rows : (6, 2) int64
         First state and number of states of each output DOF.
     """
-    n = B.shape[0]
+    n = E.shape[0]
     if np.any(np.diff(s_out) < 0):
         raise ValueError("state-space states must be grouped by output DOF (blocks sorted by pair)")
     N = n + 2
-    ss_A, ss_B, ss_C = np.zeros((3, N)), np.zeros(N), np.zeros(N)
-    ss_A[0, 1:-1], ss_B[1:-1], ss_C[1:-1] = A2[:, 0], B, C
+    ss_E, ss_P = np.zeros((5, N)), np.zeros((3, N))
+    ss_E[0, 1:-1], ss_E[3, 1:-1], ss_E[4, 1:-1] = E[:, 0], E[:, 2], E[:, 3]
+    ss_P[:, 1:-1] = P.T
     for s_ in range(n):
         q = pair[s_]
         if q < 0:
             continue
         if s_out[q] != s_out[s_] or abs(q - s_) != 1:
             raise ValueError("a complex pole's partner state must be its neighbour in the same pair's block")
-        ss_A[1 if q > s_ else 2, 1 + s_] = A2[s_, 1]
+        ss_E[1 if q > s_ else 2, 1 + s_] = E[s_, 1]
     counts = np.bincount(s_out, minlength=6)
     rows = np.stack([1 + np.concatenate([[0], np.cumsum(counts)[:-1]]), counts], axis=1).astype(np.int64)
     seg = []
@@ -255,10 +315,10 @@ def modal_layout(A2, B, C, s_in, s_out, pair):
             e += 1
         seg.append((1 + s_, 1 + e, s_in[s_]))
         s_ = e
-    return ss_A, ss_B, ss_C, np.array(seg, dtype=np.int64).reshape(-1, 3), rows
+    return ss_E, ss_P, np.array(seg, dtype=np.int64).reshape(-1, 3), rows
 
 
 def _no_state_space():
     """:func:`modal_layout` of no states: the state-space fields of a kernel without that memory."""
     e = np.zeros(0, dtype=np.int64)
-    return modal_layout(np.zeros((0, 2)), np.zeros(0), np.zeros(0), e, e, e)
+    return modal_layout(np.zeros((0, 4)), np.zeros((0, 3)), e, e, e)

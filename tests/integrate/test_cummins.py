@@ -119,14 +119,25 @@ def test_convolution_and_state_space_agree_on_the_ctv(ctv24):
         assert rms < 0.01, (d, rms)                        # rest — it stays at 0.03 rad
 
 
-def test_state_space_pole_outside_rk4_region_is_refused(ctv24):
-    from boatland.trial.motion import rk4_amplification
-
+def test_state_space_has_no_step_limit_from_fast_poles(ctv24):
+    """The memory is discretised exactly (first-order hold): at Δt = 3/|p|max — where RK4 on the fitted
+    states (the method before) was unstable, |R(pΔt)| > 1 — the decay stays within 2 % RMS of the same
+    state space at Δt/10 in every excited DOF (measured: surge 0.15 %, sway 0.28 %, heave 1.46 %, roll
+    0.77 %, pitch 1.17 % — the body's RK4 error at 0.125 s, the convolution's being as large in heave and
+    2.8 % in sway)."""
     db, mem = ctv24
     fastest = max(np.abs(np.linalg.eigvals(f.A)).max() for f in mem.state_space.pairs.values() if f.order)
-    assert rk4_amplification(np.array([-2.7])) < 1 < rk4_amplification(np.array([-2.9]))
-    with pytest.raises(ValueError, match="RK4's stability region"):
-        compile_motion(db, mem, 3.0 / fastest, method="state_space")
+    dt = 3.0 / fastest
+    z = -fastest * dt
+    assert abs(1 + z + z ** 2 / 2 + z ** 3 / 6 + z ** 4 / 24) > 1   # outside RK4's region
+    coarse = compile_motion(db, mem, dt, method="state_space").run(dt, int(round(60 / dt)), x0=list(CTV_X0))
+    fine = compile_motion(db, mem, dt / 10, method="state_space").run(dt / 10, int(round(600 / dt)),
+                                                                     x0=list(CTV_X0))
+    assert coarse["status"] == 0 and fine["status"] == 0
+    for d in range(5):
+        ref = np.interp(coarse["t"], fine["t"], fine["x"][:, d])
+        rms = np.sqrt(np.mean((coarse["x"][:, d] - ref) ** 2)) / np.sqrt(np.mean(ref ** 2))
+        assert rms < 0.02, (d, rms)
 
 
 def test_memory_is_stage_consistent(hemisphere):

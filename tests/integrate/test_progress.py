@@ -20,7 +20,8 @@ def slow_oscillator(n_pairs=36, n_hist=4000):
     base = MotionArrays.without_memory(np.eye(6) * M, C)
     pairs = np.array([(i, j) for i in range(6) for j in range(6)][:n_pairs], dtype=np.int64)
     Kh = np.full((n_pairs, 2 * n_hist + 1), 1e-6)
-    return dataclasses.replace(base, Kh=Kh, pairs_i=pairs[:, 0].copy(), pairs_j=pairs[:, 1].copy(), n_hist=n_hist)
+    return dataclasses.replace(base, Kh=Kh, pairs_i=pairs[:, 0].copy(), pairs_j=pairs[:, 1].copy(),
+                               G=np.zeros((n_pairs, 3, 2)), n_hist=n_hist)  # G: the current interval left out
 
 
 def test_counter_reaches_the_step_count():
