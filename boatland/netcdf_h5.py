@@ -1,4 +1,5 @@
-"""Write an xarray Dataset as netCDF-4 (HDF5 with dimension scales) through h5py.
+"""Write a dataset as netCDF-4 (HDF5 with dimension scales) through h5py — an xarray Dataset, or its plain
+parts (:func:`write_parts`: no xarray needed, what ``boatland run -o`` uses in a plain install).
 
 ``xarray.open_dataset`` (netCDF4 engine) opens what :func:`write_dataset` writes with its named
 dimensions, coordinates, units and attributes, and ``h5py`` reads it as plain HDF5. Writing through h5py
@@ -17,7 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["write_dataset", "copy_group"]
+__all__ = ["write_dataset", "write_parts", "copy_group"]
 
 #: HDF5 dimension-scale bookkeeping attributes (rebuilt, never copied).
 _SCALE_ATTRS = frozenset({"CLASS", "NAME", "DIMENSION_LIST", "REFERENCE_LIST", "_Netcdf4Dimid", "_Netcdf4Coordinates"})
@@ -49,7 +50,7 @@ def _put(group, name: str, data: np.ndarray, attrs: dict, compress: bool):
 
 def write_dataset(ds, group, *, compress: bool = True) -> None:
     """Write ``ds`` (an ``xarray.Dataset``) into ``group`` (an open ``h5py.File`` or group created with
-    ``track_order=True``) as netCDF-4.
+    ``track_order=True``) as netCDF-4 (:func:`write_parts` of its variables).
 
     Parameters
     ----------
@@ -59,27 +60,54 @@ def write_dataset(ds, group, *, compress: bool = True) -> None:
     compress : bool
         gzip + shuffle for arrays above 1024 elements.
     """
-    missing = [d for d in ds.dims if d not in ds.coords]
+    part = lambda v: (tuple(v.dims), v.values, dict(v.attrs))  # noqa: E731
+    write_parts(group, {n: part(ds[n]) for n in ds.data_vars}, {n: part(ds[n]) for n in ds.coords},
+                dict(ds.attrs), dims=list(ds.dims), compress=compress)
+
+
+def write_parts(group, data_vars: dict, coords: dict, attrs: dict, *, dims=None, compress: bool = True) -> None:
+    """Write a dataset given as plain parts — no xarray needed — into ``group`` as netCDF-4.
+
+    Parameters
+    ----------
+    group : h5py.Group
+        An open file or group created with ``track_order=True``.
+    data_vars, coords : dict
+        name → ``(dims, data, attrs)`` (``dims`` a tuple of names, or one name) — the form
+        ``xarray.Dataset(data_vars, coords=coords, attrs=attrs)`` takes. Every dimension has a coordinate
+        of its own name.
+    attrs : dict
+        The dataset's attributes (None values left out).
+    dims : list of str, optional
+        The order the dimension scales are written in (default: as the dimension coordinates come).
+    compress : bool
+        gzip + shuffle for arrays above 1024 elements.
+    """
+    norm = lambda p: ((p[0],) if isinstance(p[0], str) else tuple(p[0]), np.asarray(p[1]), dict(p[2]))  # noqa: E731
+    data_vars = {n: norm(p) for n, p in data_vars.items()}
+    coords = {n: norm(p) for n, p in coords.items()}
+    used = {d for _, (ds_, _, _) in (*data_vars.items(), *coords.items()) for d in ds_}
+    index = [n for n, (ds_, _, _) in coords.items() if ds_ == (n,)]
+    missing = sorted(used - set(index))
     if missing:
         raise ValueError(f"dimensions without a coordinate: {', '.join(missing)}")
+    order = list(dims) if dims is not None else index
     scales = {}
-    for d in ds.dims:
-        c = ds[d]
-        scales[d] = _put(group, d, c.values, dict(c.attrs), compress)
+    for d in order:
+        _, data, a = coords[d]
+        scales[d] = _put(group, d, data, a, compress)
         scales[d].make_scale(d)
-    names = [n for n in ds.coords if n not in ds.dims] + list(ds.data_vars)
-    coords = [n for n in ds.coords if n not in ds.dims]
-    for name in names:
-        v = ds[name]
-        attrs = dict(v.attrs)
-        if name in ds.data_vars and coords:      # non-index coordinates (e.g. per-DOF units) go with the data
-            related = [c for c in coords if set(ds[c].dims) <= set(v.dims)]
+    extra = [n for n in coords if n not in index]
+    for name, (vdims, data, a) in [*((n, coords[n]) for n in extra), *data_vars.items()]:
+        a = dict(a)
+        if name in data_vars and extra:      # non-index coordinates (e.g. per-DOF units) go with the data
+            related = [c for c in extra if set(coords[c][0]) <= set(vdims)]
             if related:
-                attrs["coordinates"] = " ".join(related)
-        h = _put(group, name, v.values, attrs, compress)
-        for i, dim in enumerate(v.dims):
+                a["coordinates"] = " ".join(related)
+        h = _put(group, name, data, a, compress)
+        for i, dim in enumerate(vdims):
             h.dims[i].attach_scale(scales[dim])
-    for k, v in ds.attrs.items():
+    for k, v in attrs.items():
         if v is not None:
             group.attrs[k] = _attr(v)
 

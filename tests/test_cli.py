@@ -29,6 +29,14 @@ def test_irf_help_states_the_library_fit_defaults():
     assert f"default {TARGET_R2:g}" in text and f"default {MAX_ORDER}" in text
 
 
+def test_irf_without_arguments_works_on_the_default_vessel():
+    """ctv27 rings for 75 s: without --t-max the memory is lengthened until K has decayed (60 → 120 s), saying so."""
+    r = run("irf", "--no-store", "--no-fit", "--json")
+    assert r.returncode == 0, r.stderr
+    assert "T_K = 60 s is too short" in r.stderr and "trying 120 s" in r.stderr
+    assert json.loads(r.stdout)["settings"]["t_max"] == 120.0
+
+
 def test_import_then_info(refdata, tmp_path):
     out = tmp_path / "sphere.h5"
     r = run("hydro", "import", refdata / "bemio_sphere" / "sphere.h5", "-o", out)

@@ -527,10 +527,13 @@ def _figures(data, dec: Decision, out):
     return files
 
 
-def _save(fig, path: Path) -> Path:
+def _save(fig, path: Path, tight: bool = True) -> Path:
+    """Save and close ``fig``; ``tight``: lay it out first (not for a figure whose axes are placed by hand,
+    which matplotlib would warn about)."""
     from boatland.plotstyle import save_figure
 
-    fig.tight_layout()
+    if tight:
+        fig.tight_layout()
     return save_figure(fig, path)
 
 
@@ -635,5 +638,5 @@ def _isee_figures(runs, lim, plan, inc, out):
         acc = float(lim["accept"][0])
         ax.set_title(f"limiting Hs [m] at P({inc}) = {acc:g} per access\n(heading relative to the bow)", fontsize=9)
         fig.legend(*ax.get_legend_handles_labels(), fontsize=6, loc="lower center", ncol=2, frameon=False)
-        files.append(_save(fig, out / "limiting_hs_polar.png"))
+        files.append(_save(fig, out / "limiting_hs_polar.png", tight=False))   # axes placed by hand
     return files

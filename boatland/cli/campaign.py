@@ -6,6 +6,7 @@ import os
 import sys
 from pathlib import Path
 
+from boatland.cli.common import shipped_or_path
 from boatland.cli.guard import Output, check_outputs, in_range, integer
 
 __all__ = ["add_parser", "cmd"]
@@ -18,7 +19,9 @@ def add_parser(sub) -> None:
                     "local worker processes or a Dask cluster. Results go to an HDF5 store as they arrive; "
                     "running the same command again resumes where it stopped (no trial lost or run twice). "
                     "Example: boatland campaign scenarios/campaigns/demo.toml")
-    camp.add_argument("campaign", type=Path, help="campaign file (TOML); see scenarios/campaigns/")
+    camp.add_argument("campaign", type=shipped_or_path("campaign"),
+                      help="campaign file (TOML) or the name of a shipped one: demo, isee_rare, table414, … "
+                           "(scenarios/campaigns/)")
     camp.add_argument("-o", "--output", type=Path, help="store (HDF5; default: <campaign name>.h5 here)")
     camp.add_argument("--workers", type=integer(1, 4096), help="local worker processes (default: all cores)")
     camp.add_argument("--scheduler", metavar="URL", help="run on a Dask scheduler (tcp://host:port) instead")

@@ -10,7 +10,8 @@ from pathlib import Path
 from boatland.cli.guard import in_range, positive
 from boatland.errors import BoatlandInputError
 
-__all__ = ["DEFAULT_VESSEL", "scenario_argument", "screening_options", "freq_load", "freq_sea",
+__all__ = ["DEFAULT_VESSEL", "shipped_or_path", "shipped_names", "parse_setting", "set_option", "settings_changes",
+           "scenario_argument", "screening_options", "freq_load", "freq_sea",
            "freq_check", "freq_setup", "scenario_inputs", "load_guarded", "with_overrides", "check_fits_in_memory",
            "available_memory", "compile_notice", "kernels_cached", "print_json"]
 
@@ -42,7 +43,9 @@ def with_overrides(scenario, changes: dict, flags: dict):
     try:
         return scenario.replace(changes)
     except SpecError as exc:
-        given = ", ".join(f"{flags[k]} {v:g}" if isinstance(v, float) else f"{flags[k]} {v}" for k, v in changes.items())
+        show = lambda k, v: f"{v:g}" if isinstance(v, float) else str(v)  # noqa: E731
+        given = ", ".join(f"{flags[k]}{show(k, v)}" if flags[k].endswith("=") else f"{flags[k]} {show(k, v)}"
+                          for k, v in changes.items())
         why = "; ".join(f"{k}: {m}" if k else m for k, m in exc.problems)
         raise BoatlandInputError(f"{given}: {why}") from None
 
@@ -105,13 +108,89 @@ def check_fits_in_memory(setup, *, flag: str = "simulation.duration", copies: in
             + (" or use fewer --workers" if copies > 1 else ""))
 
 
+def shipped_or_path(kind: str):
+    """An argparse ``type`` for a scenario (``kind`` "scenario") or campaign ("campaign") file: a path that
+    exists, else the name of one shipped with boatland (``ctv_landing``, ``ctv24_landing``; ``demo``,
+    ``isee_rare``, ``table414``; with or without ``.toml``), else the path as given (its loader then says
+    the file is missing); a bare name that is neither is refused with the shipped names."""
+    import argparse
+
+    def parse(text: str) -> Path:
+        path = Path(text)
+        if path.exists() or os.sep in text or "/" in text:
+            return path
+        shipped = _shipped_folder(kind)
+        for candidate in (shipped / text, shipped / f"{text}.toml"):
+            if candidate.is_file():
+                return candidate
+        if path.suffix:           # a file name: its loader says it is missing, as for any path
+            return path
+        names = ", ".join(shipped_names(kind))
+        raise argparse.ArgumentTypeError(f"{text}: no such file, and not a shipped {kind} ({names})")
+
+    parse.__name__ = f"{kind} file"
+    return parse
+
+
+def _shipped_folder(kind: str) -> Path:
+    from boatland.resources import shipped_scenarios
+
+    return shipped_scenarios() / "campaigns" if kind == "campaign" else shipped_scenarios()
+
+
+def shipped_names(kind: str) -> list[str]:
+    """The names of the scenarios (``kind`` "scenario") or campaigns ("campaign") shipped with boatland."""
+    return sorted(p.stem for p in _shipped_folder(kind).glob("*.toml"))
+
+
+def parse_setting(text: str) -> tuple[str, object]:
+    """``KEY=VALUE`` of ``--set``: a key path as in the scenario's TOML (``sea.Hs``, ``fender.mu_s``) and a TOML
+    value (``0.6``, ``[0.1, 0.3]``, ``true``, ``"ctv24"``; a bare word is a string: ``convolution``)."""
+    import argparse
+    import re
+    import tomllib
+
+    key, eq, raw = text.partition("=")
+    key, raw = key.strip(), raw.strip()
+    if not eq or not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*(\.[A-Za-z_][A-Za-z0-9_]*)+", key) or not raw:
+        raise argparse.ArgumentTypeError(f"{text!r}: expected KEY=VALUE with a key path as in the scenario file, "
+                                         "e.g. sea.Hs=0.6, fender.mu_s=0.5, radiation.method=convolution")
+    try:
+        value = tomllib.loads(f"v = {raw}")["v"]
+    except tomllib.TOMLDecodeError:
+        value = raw
+    return key, value
+
+
+def set_option(cmd) -> None:
+    """``--set KEY=VALUE`` (repeatable): change the scenario as its file would, validated the same way."""
+    cmd.add_argument("--set", type=parse_setting, action="append", default=[], metavar="KEY=VALUE", dest="settings",
+                     help="change a value of the scenario, with its key path as in the file (repeatable): "
+                          "--set sea.Hs=0.6 --set sea.relative_direction_deg=150 --set thrust.force=100e3")
+
+
+def settings_changes(args, changes: dict | None = None, flags: dict | None = None) -> tuple[dict, dict]:
+    """The ``changes`` and ``flags`` of :func:`load_guarded` with the command's ``--set`` values added (a flag
+    the command has for the same key wins: it is the more specific)."""
+    changes, flags = dict(changes or {}), dict(flags or {})
+    for key, value in getattr(args, "settings", None) or []:
+        if key not in changes:
+            changes[key] = value
+            flags[key] = f"--set {key}="
+    return changes, flags
+
+
 def scenario_argument(cmd, optional: bool = True) -> None:
-    """The positional scenario file of ``rao``, ``screen`` and ``operability``."""
+    """The positional scenario of ``rao``, ``screen`` and ``operability``: a file or a shipped name, and
+    ``--set`` (:func:`set_option`)."""
+    set_option(cmd)
     if optional:
-        cmd.add_argument("scenario", nargs="?", type=Path,
-                         help="scenario file (TOML; default: scenarios/ctv_landing.toml)")
+        cmd.add_argument("scenario", nargs="?", type=shipped_or_path("scenario"),
+                         help="scenario file (TOML) or the name of a shipped one, e.g. ctv24_landing "
+                              "(default: ctv_landing)")
     else:
-        cmd.add_argument("scenario", type=Path, help="scenario file (TOML)")
+        cmd.add_argument("scenario", type=shipped_or_path("scenario"),
+                         help="scenario file (TOML) or the name of a shipped one, e.g. ctv24_landing")
 
 
 def screening_options(cmd) -> None:
@@ -136,9 +215,11 @@ def screening_options(cmd) -> None:
     cmd.add_argument("--json", action="store_true", help="print the results as JSON")
 
 
-def freq_load(path, outputs=()):
-    """Scenario and database for the frequency-domain commands, ``outputs`` guarded (warnings printed)."""
-    scenario, db, warns, _ = load_guarded(path, outputs)
+def freq_load(path, outputs=(), args=None):
+    """Scenario and database for the frequency-domain commands, ``outputs`` guarded (warnings printed), the
+    command's ``--set`` values applied (``args``)."""
+    changes, flags = settings_changes(args)
+    scenario, db, warns, _ = load_guarded(path, outputs, changes=changes, flags=flags)
     for w in warns:
         print(f"warning: {w}", file=sys.stderr)
     return scenario, db

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import sys
 from pathlib import Path
 
 from boatland.cli.common import DEFAULT_VESSEL
@@ -10,6 +11,10 @@ from boatland.cli.guard import Output, check_outputs, in_range, integer, positiv
 from boatland.errors import BoatlandInputError
 
 __all__ = ["add_parser", "cmd"]
+
+
+#: Memory lengths T_K [s] tried in turn when --t-max is not given (the scenario's default first).
+T_MAX_DEFAULTS = (60.0, 120.0, 240.0, 480.0)
 
 
 def add_parser(sub) -> None:
@@ -21,7 +26,9 @@ def add_parser(sub) -> None:
                     "database file (BEMIO impulse_response_fun / state_space groups).")
     irf.add_argument("database", nargs="?", default=DEFAULT_VESSEL,
                      help=f"database file or built-in vessel name (default: {DEFAULT_VESSEL})")
-    irf.add_argument("--t-max", type=positive("s", 1e5), default=60.0, help="memory length T_K [s] (default 60)")
+    irf.add_argument("--t-max", type=positive("s", 1e5),
+                     help=f"memory length T_K [s] (default {T_MAX_DEFAULTS[0]:g}, doubled up to "
+                          f"{T_MAX_DEFAULTS[-1]:g} while K has not decayed by it, saying so: ctv27 rings for 75 s)")
     irf.add_argument("--dt", type=positive("s", 1e3), help="time step of K [s] (default min(0.05, π/(3 ω_max)))")
     irf.add_argument("--tail", choices=("auto", "linear", "none", "asymptotic"), default="auto",
                      help="B(ω) above the band: straight to zero over 20%% of ω_max, stop, extrapolate "
@@ -49,7 +56,7 @@ def add_parser(sub) -> None:
 def cmd(args) -> int:
     from boatland.hydro.bemio import write_bemio, write_radiation
     from boatland.hydro.irf_report import irf_summary, irf_table, plot_irf
-    from boatland.irf.impulse import IRFSettings
+    from boatland.irf.impulse import IRFNotDecayed, IRFSettings
     from boatland.vessel.radiation import MAX_ORDER, TARGET_R2, default_dt, radiation_memory
 
     is_file = Path(args.database).exists()
@@ -66,17 +73,26 @@ def cmd(args) -> int:
     from boatland.hydro import load_database
 
     db = load_database(args.database)
-    if args.dt is not None and args.dt >= args.t_max:
-        raise BoatlandInputError(f"--dt {args.dt:g}: must be smaller than --t-max {args.t_max:g} s")
+    lengths = T_MAX_DEFAULTS if args.t_max is None else (args.t_max,)
+    if args.dt is not None and args.dt >= lengths[0]:
+        raise BoatlandInputError(f"--dt {args.dt:g}: must be smaller than --t-max {lengths[0]:g} s")
     dt = args.dt if args.dt is not None else default_dt(db.omega[-1])
-    try:
-        settings = IRFSettings(t_max=args.t_max, dt=dt, tail=args.tail, taper=args.taper, clean=args.clean,
-                               check_band=tuple(args.band) if args.band else None)
-    except BoatlandInputError as exc:
-        raise BoatlandInputError(f"--t-max {args.t_max:g} / --dt {dt:g}: {exc}") from None
-    memory = radiation_memory(db, settings, fit=not args.no_fit,
-                              target_r2=TARGET_R2 if args.target_r2 is None else args.target_r2,
-                              max_order=MAX_ORDER if args.max_order is None else args.max_order)
+    for t_max in lengths:
+        try:
+            settings = IRFSettings(t_max=t_max, dt=dt, tail=args.tail, taper=args.taper, clean=args.clean,
+                                   check_band=tuple(args.band) if args.band else None)
+        except BoatlandInputError as exc:
+            raise BoatlandInputError(f"--t-max {t_max:g} / --dt {dt:g}: {exc}") from None
+        try:
+            memory = radiation_memory(db, settings, fit=not args.no_fit,
+                                      target_r2=TARGET_R2 if args.target_r2 is None else args.target_r2,
+                                      max_order=MAX_ORDER if args.max_order is None else args.max_order)
+            break
+        except IRFNotDecayed as exc:
+            if t_max == lengths[-1]:
+                raise
+            print(f"note: T_K = {t_max:g} s is too short ({str(exc).split(' (')[0]}); trying {2 * t_max:g} s",
+                  file=sys.stderr)
     print(json.dumps(irf_summary(memory), indent=2) if args.json else irf_table(memory))
     if args.plot:
         plot_irf(db, memory, args.plot)

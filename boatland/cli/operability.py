@@ -37,7 +37,7 @@ def cmd(args) -> int:
     freq_check(args)
     if not args.scatter.is_file():
         raise BoatlandInputError(f"{args.scatter}: no such file")
-    scenario, db = freq_load(args.scenario)
+    scenario, db = freq_load(args.scenario, (), args)
     setup = freq_setup(args, scenario, db)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", BoatlandWarning)

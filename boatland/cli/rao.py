@@ -42,7 +42,7 @@ def cmd(args) -> int:
     from boatland.freqdomain.screening import landed_response
 
     scenario, db = freq_load(args.scenario, [Output("-o", args.output, "figure"),
-                                             Output("--compare-open-sea", args.compare_open_sea, "figure")])
+                                             Output("--compare-open-sea", args.compare_open_sea, "figure")], args)
     setup = LandingSetup.from_scenario(scenario, db)
     beta = args.direction
     key = "--direction"

@@ -13,7 +13,7 @@ def add_parser(sub) -> None:
     rep = sub.add_parser(
         "report", help="one page (report.html), decision table, tables and figures of a finished campaign store",
         description="Print the decision table of a campaign — P(incident within the access) with its Clopper–Pearson "
-                    "95 %% interval per Hs × Tp × heading, the limiting Hs with its interval, and the seeds an "
+                    "95 % interval per Hs × Tp × heading, the limiting Hs with its interval, and the seeds an "
                     "interval of --width needs — and write report.html, one self-contained page to decide from "
                     "(opens offline, reads on a phone: the inputs, the incident and the accepted risk in words, the "
                     "decision table and every figure embedded), with decision.md/.csv, the per-case tables "

@@ -8,6 +8,7 @@ import sys
 import time
 from pathlib import Path
 
+from boatland.cli.common import set_option, shipped_or_path
 from boatland.cli.guard import accept_arg, integer, positive, seed
 
 __all__ = ["add_parser", "cmd"]
@@ -27,7 +28,10 @@ def add_parser(sub) -> None:
                     "(--accept). One trial's luck is not the sea's risk. Without a file: "
                     "scenarios/ctv_landing.toml (the 27 m CTV ctv27 pushing 150 kN in JONSWAP Hs 0.4 m, Tp 7 s, "
                     "head seas).")
-    run.add_argument("scenario", nargs="?", type=Path, help="scenario file (TOML); see 'boatland scenario schema'")
+    run.add_argument("scenario", nargs="?", type=shipped_or_path("scenario"),
+                     help="scenario file (TOML; see 'boatland scenario schema') or the name of a shipped one, e.g. "
+                          "ctv24_landing (default: ctv_landing)")
+    set_option(run)
     run.add_argument("--json", action="store_true",
                      help="print the verdict, inputs, summary and events as JSON (values rounded to the model's "
                           "resolution)")
@@ -66,7 +70,7 @@ def add_parser(sub) -> None:
 
 
 def cmd(args) -> int:
-    from boatland.cli.common import check_fits_in_memory, compile_notice, load_guarded
+    from boatland.cli.common import check_fits_in_memory, compile_notice, load_guarded, settings_changes
     from boatland.trial.simulate import BlowUpError, simulate
 
     path = args.scenario
@@ -76,8 +80,8 @@ def cmd(args) -> int:
         parse_target(args.rerun, bind=args.bind, port=args.port)       # a bad spec fails first
     changes = {k: v for k, v in (("simulation.duration", args.duration), ("simulation.seed", args.seed))
                if v is not None}
-    scenario, db, warns, setup = load_guarded(path, lambda sc: _outputs(args, sc), changes=changes,
-                                       flags={"simulation.duration": "--duration", "simulation.seed": "--seed"})
+    changes, flags = settings_changes(args, changes, {"simulation.duration": "--duration", "simulation.seed": "--seed"})
+    scenario, db, warns, setup = load_guarded(path, lambda sc: _outputs(args, sc), changes=changes, flags=flags)
     check_fits_in_memory(setup, flag="--duration" if args.duration is not None else f"{scenario.source}: "
                                                                                     "simulation.duration")
     sinks, log_path, live = _recording_sinks(args, scenario)

@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-from pathlib import Path
 
+from boatland.cli.common import shipped_or_path
 from boatland.cli.guard import no_subcommand
 
 __all__ = ["add_parser", "check", "schema"]
@@ -16,7 +16,7 @@ def add_parser(sub) -> None:
     ssub = scen.add_subparsers(title="scenario commands", metavar="SCENARIO_COMMAND")
     scen.set_defaults(func=no_subcommand(scen))
     chk = ssub.add_parser("check", help="validate a scenario file and its physics against the database")
-    chk.add_argument("file", type=Path)
+    chk.add_argument("file", type=shipped_or_path("scenario"), help="scenario file (TOML) or a shipped name")
     chk.add_argument("--json", action="store_true",
                      help="print the result as JSON: ok, problems with their key paths, warnings, notes, inputs")
     chk.set_defaults(func=check)

@@ -13,6 +13,7 @@ from boatland.cli.common import (
     freq_setup,
     scenario_argument,
     screening_options,
+    settings_changes,
 )
 from boatland.cli.guard import Output, in_range, integer, positive
 from boatland.errors import BoatlandInputError
@@ -85,7 +86,7 @@ def cmd(args) -> int:
     for flag, value in (("--factors", args.factors), ("--limits", args.limits)):
         if value is not None:
             raise BoatlandInputError(f"{flag}: only with --sensitivity")
-    scenario, db = freq_load(args.scenario, [Output("-o", args.output, "figure")])
+    scenario, db = freq_load(args.scenario, [Output("-o", args.output, "figure")], args)
     setup = freq_setup(args, scenario, db)
     if args.tp is None:
         args.tp = [3.0, 18.0, 16]
@@ -225,7 +226,7 @@ def _current_sweep(args) -> int:
     from boatland.freqdomain.currents import DEFAULT_SPEEDS, current_sweep, plot_current_sweep
     from boatland.freqdomain.statistics import risk_in_words
 
-    scenario, db = freq_load(args.scenario, [Output("-o", args.output, "figure")])
+    scenario, db = freq_load(args.scenario, [Output("-o", args.output, "figure")], args)
     if args.tp is not None or args.directions is not None:
         raise BoatlandInputError("--current-sweep takes its period as its own value (--current-sweep TP) and sweeps "
                                  "the current's directions: not with --tp or --directions")
@@ -294,8 +295,10 @@ def _sensitivity(args) -> int:
     if tp is not None and not (len(tp) == 1 or (len(tp) == 3 and tp[0] == tp[1] and tp[2] == 1)):
         raise BoatlandInputError(f"--tp {' '.join(f'{t:g}' for t in tp)}: --sensitivity takes one peak period "
                                  "(--tp TP)")
+    changes, flags = settings_changes(args)
     scenario, db, warns, _ = load_guarded(args.scenario, [Output("-o", args.output, "figure")],
-                                          extra_inputs=[args.limits] if args.limits else ())
+                                          extra_inputs=[args.limits] if args.limits else (), changes=changes,
+                                          flags=flags)
     for w in warns:
         print(f"warning: {w}", file=sys.stderr)
     setup = freq_setup(args, scenario, db)

@@ -38,7 +38,8 @@ from boatland.conventions import DOF_NAMES
 from boatland.errors import BoatlandInputError
 from boatland.irf.quadrature import cos_transform, sin_transform
 
-__all__ = ["IRFSettings", "IRF", "compute_irf", "find_spikes", "describe_spikes", "significant_pairs", "pair_name", "IRFError"]
+__all__ = ["IRFSettings", "IRF", "compute_irf", "find_spikes", "describe_spikes", "significant_pairs", "pair_name", "IRFError",
+           "IRFNotDecayed"]
 
 TAILS = ("auto", "none", "linear", "asymptotic")
 CLEANS = ("clip", "cut", "none")
@@ -47,6 +48,10 @@ TAPERS = ("none", "cosine")
 
 class IRFError(BoatlandInputError):
     """The IRF cannot be computed well from this input; the message says what to change."""
+
+
+class IRFNotDecayed(IRFError):
+    """K has not decayed by T_K: a longer memory is needed (the message says how long to try)."""
 
 
 def pair_name(i: int, j: int) -> str:
@@ -366,7 +371,7 @@ def compute_irf(omega, A, B, A_inf=None, settings: IRFSettings | None = None) ->
             if find_spikes(Bc[i, i]).size:
                 hint = ("; B has sharp peaks that make K ring (irregular frequencies: rerun the BEM with a lid; "
                         "a catamaran's trapped waves: a longer memory)")
-            raise IRFError(f"K[{pair_name(i, i)}] has not decayed by T_K = {t[-1]:g} s "
+            raise IRFNotDecayed(f"K[{pair_name(i, i)}] has not decayed by T_K = {t[-1]:g} s "
                            f"(max|K| over the last 10 % is {100 * truncation[i, i]:.0f} % of its peak): "
                            f"increase t_max (try {2 * t[-1]:g} s){hint}")
 

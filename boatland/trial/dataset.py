@@ -17,7 +17,7 @@ from boatland import __version__
 from boatland.conventions import DOF_NAMES, DOF_UNITS
 from boatland.trial.incidents import RollAbove, SlipDistance
 
-__all__ = ["result_dataset", "TANGENTS", "MODE_MEANINGS"]
+__all__ = ["result_dataset", "result_parts", "TANGENTS", "MODE_MEANINGS"]
 
 #: The two tangential directions of a contact on its tube.
 TANGENTS = ("vertical", "horizontal")
@@ -45,6 +45,13 @@ def result_dataset(r):
     from boatland.resources import require
 
     xr = require("xarray", "Result.to_xarray")
+    var, coords, attrs = result_parts(r)
+    return xr.Dataset(var, coords=coords, attrs=attrs)
+
+
+def result_parts(r) -> tuple[dict, dict, dict]:
+    """The dataset of :func:`result_dataset` as plain parts, ``(data_vars, coords, attrs)`` with
+    name → ``(dims, data, attrs)`` — what :func:`boatland.netcdf_h5.write_parts` writes without xarray."""
     nc = r.mode.shape[1]
     t = np.asarray(r.t, dtype=float)
     var = {}
@@ -128,4 +135,4 @@ def result_dataset(r):
         "provenance": json.dumps(r.provenance, default=str),
     }
     attrs = {k: a for k, a in attrs.items() if a is not None and not (isinstance(a, np.ndarray) and a.size == 0)}
-    return xr.Dataset(var, coords=coords, attrs=attrs)
+    return var, coords, attrs

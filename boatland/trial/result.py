@@ -346,15 +346,17 @@ class Result(TrialSeries):
         return result_dataset(self)
 
     def to_hdf5(self, path: str | Path) -> Path:
-        """Write :meth:`to_xarray` as netCDF-4/HDF5 (``xarray.open_dataset(path)`` opens it with its
-        dimensions and units; h5py reads it as plain HDF5), atomically (nothing half-written)."""
+        """Write the dataset of :meth:`to_xarray` as netCDF-4/HDF5 (``xarray.open_dataset(path)`` opens it with
+        its dimensions and units; h5py reads it as plain HDF5), atomically (nothing half-written). Needs
+        h5py only — not xarray."""
         import h5py
 
-        from boatland.netcdf_h5 import write_dataset
+        from boatland.netcdf_h5 import write_parts
+        from boatland.trial.dataset import result_parts
 
         path = Path(path)
-        ds = self.to_xarray()
+        var, coords, attrs = result_parts(self)
         with atomic_path(path) as tmp:
             with h5py.File(tmp, "w", track_order=True) as f:
-                write_dataset(ds, f)
+                write_parts(f, var, coords, attrs)
         return path

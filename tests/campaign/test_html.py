@@ -19,6 +19,9 @@ from boatland.campaign.labels import axis_label, inputs_from_header, value_text
 from boatland.campaign.report import read_store, write_report
 from boatland.freqdomain.statistics import DEFAULT_STATISTICS, one_in, risk_in_words
 
+#: No library warning reaches the user of a report (matplotlib's layout warnings included).
+pytestmark = pytest.mark.filterwarnings("error::UserWarning")
+
 pytestmark = pytest.mark.slow        # small campaigns run for the pages: not in the quick loop
 
 REPO = Path(__file__).resolve().parents[2]

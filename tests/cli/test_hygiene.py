@@ -101,3 +101,13 @@ def test_compile_notice_only_when_the_kernels_are_not_cached(monkeypatch, capsys
     monkeypatch.setattr(common, "kernels_cached", lambda: True)
     common.compile_notice()
     assert capsys.readouterr().err == ""
+
+
+@pytest.mark.parametrize("command", [["run"], ["replay"], ["plot"], ["campaign"], ["report"], ["scenario", "check"],
+                                     ["hydro", "build"], ["hydro", "import"], ["hydro", "info"], ["irf"], ["rao"],
+                                     ["screen"], ["operability"], ["validate"]])
+def test_help_prints_no_format_escapes(command, capsys):
+    """argparse formats help strings (a "%" is written "%%" there) but not descriptions: neither shows a "%%"."""
+    assert main([*command, "--help"]) == 0
+    out = capsys.readouterr().out
+    assert out.startswith("usage: boatland") and "%%" not in out

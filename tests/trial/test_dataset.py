@@ -51,3 +51,25 @@ def test_campaign_store_keeps_a_trial_xarray_can_open(trial, tmp_path):
         copy_group(s, f.create_group("series/trial_000001", track_order=True))
     with xr.open_dataset(tmp_path / "store.h5", group="series/trial_000001") as back:
         xr.testing.assert_identical(back.load(), trial.to_xarray())
+
+
+def test_run_writes_its_file_without_xarray(tmp_path):
+    """``boatland run -o`` in an install without the optional xarray (a real subprocess in which importing it
+    fails) writes its file — h5py alone — and xarray opens it with its dimensions, units and inputs (the
+    file is the dataset itself: test_output_file_opens_in_xarray_as_the_same_dataset)."""
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    scen = Path(__file__).resolve().parents[2] / "scenarios" / "ctv24_landing.toml"
+    out = tmp_path / "run.h5"
+    code = ("import sys; sys.modules['xarray'] = None\n"
+            "from boatland.cli import main\n"
+            f"sys.exit(main(['run', {str(scen)!r}, '--duration', '30', '--no-log', '-o', {str(out)!r}]))")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    with xr.open_dataset(out) as back:
+        back.load()
+        assert back.attrs["input_Hs_m"] == 1.5 and back.motion.dims == ("time", "dof")
+        assert back.sizes["time"] == 601 and back.friction_force.units == "N"
+        assert "xarray" not in r.stderr
