@@ -1,5 +1,7 @@
 """A trial as an xarray Dataset, and the ``-o`` file that xarray opens as the same Dataset."""
 
+import re
+
 import h5py
 import numpy as np
 import pytest
@@ -19,9 +21,16 @@ def test_named_dimensions_units_and_inputs(trial):
     assert dict(ds.sizes) == {"time": len(trial.t), "dof": 6, "contact": 2, "tangent": 2,
                               "event": len(trial.events), "episode": len(trial.episodes)}
     assert ds.normal_force.dims == ("time", "contact") and ds.friction_force.dims == ("time", "contact", "tangent")
+    mixed = ("motion", "velocity", "wave_force")               # their units differ per DOF: dof_units names them
     for name, v in ds.variables.items():
-        if name not in ("dof", "dof_units", "tangent", "contact", "event", "episode"):
+        if name not in ("dof", "dof_units", "tangent", "contact", "event", "episode", *mixed):
             assert v.attrs.get("units"), name
+        if "units" in v.attrs:                                  # CF/UDUNITS strings a tool can read
+            assert re.fullmatch(r"1|s|m|deg|N|J|m/s|rad|N m", v.attrs["units"]), (name, v.attrs["units"])
+        # short labels: xarray's plot puts "long_name [units]" on an axis
+        assert 0 < len(v.attrs.get("long_name", "x")) <= 24, (name, v.attrs.get("long_name"))
+    assert all("units" not in ds[n].attrs and "dof_units" in ds[n].attrs["comment"] for n in mixed)
+    assert ds.friction_utilisation.long_name == "friction utilisation" and "slips" in ds.friction_utilisation.comment
     np.testing.assert_array_equal(ds.motion.sel(dof="heave"), trial.x[:, 2])
     np.testing.assert_allclose(ds.pitch, np.degrees(trial.x[:, 4]))
     assert ds.pitch.units == "deg" and str(ds.dof_units.sel(dof="pitch").values) == "rad"
