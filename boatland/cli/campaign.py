@@ -231,20 +231,24 @@ def _isee(args, campaign, store, where, worst_dir) -> int:
     if "isee_limits" in data:
         for L in data["isee_limits"]:
             c = int(L["case"])
+            mine = runs[runs["case"] == c]
+            levels = mine["hs"] if mine.size else np.array([np.nan])
             if np.isfinite(L["limiting Hs"]):
-                found = (f"limiting Hs {L['limiting Hs']:.4g} m [{L['limiting Hs lo']:.4g}, "
-                         f"{L['limiting Hs hi']:.4g}] for P({inc}) = {L['accept']:g}")
+                found = (f"limiting Hs {L['limiting Hs']:.4g} m {_limit_interval(L, levels)} for P({inc}) = "
+                         f"{L['accept']:g}")
             else:                                  # no level saw the incident: say how far it looked
-                mine = runs[runs["case"] == c]
                 top = mine[np.argmax(mine["hs"])] if mine.size else None
                 found = (f"no limiting Hs for P({inc}) = {L['accept']:g}: no {inc} in {int(mine['samples'].sum())} "
                          f"samples" + (f" up to Hs {top['hs']:.4g} m, where P(first slip) = "
                                        f"{top['linear first slip: P']:.2g} (the importance sampling of the first "
                                        "slip gains nothing where it is near-certain: a Monte Carlo campaign there "
                                        "bounds it)" if top is not None else ""))
+            lin, scr = L["linear limiting Hs"], L["screening " + stat + " Hs"]
             print(f"  case {c} ({L['label'].decode() or 'base'}): {found}; onset limits: the linear model's {onset} "
-                  f"{L['linear limiting Hs']:.4g} m, the screening's first slip ({stat}) "
-                  f"{L['screening ' + stat + ' Hs']:.4g} m")
+                  + (f"{lin:.4g} m" if np.isfinite(lin) else
+                     f"not found ({_no_limit_why(levels)})")
+                  + f", the screening's first slip ({stat}) "
+                  + (f"{scr:.4g} m" if np.isfinite(scr) else "not found"))
         print(f"  accepted: {risk_in_words(float(data['isee_limits'][0]['accept']), campaign.access or ACCESS_DURATION)}")
     if worst_dir is not None:
         _save_worst(campaign, data["trials"], worst_dir, args.save_worst, inc)
@@ -277,3 +281,23 @@ def _save_worst(campaign, table, folder: Path, n: int, incident: str, quiet: boo
         if not quiet:
             print(f"wrote {path} (weight {w:.3g}; {row['events'].decode() or 'no events in the access'}; "
                   f"'boatland replay {path}' for Rerun)")
+
+
+def _no_limit_why(levels) -> str:
+    """Why a limit fit found nothing (:func:`boatland.campaign.isee.limit_fit` looks within ×3 of the levels)."""
+    import numpy as np
+
+    return (f"its P does not cross the target between Hs {np.nanmin(levels) / 3:.3g} and {np.nanmax(levels) * 3:.3g} m, "
+            "a third of the lowest level searched and three times the highest")
+
+
+def _limit_interval(L, levels) -> str:
+    """The limiting Hs's 95 % interval in words where an end was not found within ×3 of the levels searched."""
+    import numpy as np
+
+    lo, hi = L["limiting Hs lo"], L["limiting Hs hi"]
+    left = f"{lo:.4g}" if np.isfinite(lo) else f"< {np.nanmin(levels) / 3:.3g}"
+    right = f"{hi:.4g}" if np.isfinite(hi) else f"> {np.nanmax(levels) * 3:.3g}"
+    note = "" if np.isfinite(lo) and np.isfinite(hi) else (
+        " (an end of the interval lies beyond ×3 of the levels searched: more samples or levels narrow it)")
+    return f"[{left}, {right}]{note}"
