@@ -111,3 +111,20 @@ def test_help_prints_no_format_escapes(command, capsys):
     assert main([*command, "--help"]) == 0
     out = capsys.readouterr().out
     assert out.startswith("usage: boatland") and "%%" not in out
+
+
+def test_run_help_states_the_default_scenario(capsys):
+    """``run --help`` describes the trial it runs without a file: the default scenario's vessel, push and sea."""
+    from boatland.checks.files import default_scenario_path, load
+
+    sc = load(default_scenario_path())
+    assert main(["run", "--help"]) == 0
+    text = " ".join(capsys.readouterr().out.split())
+    (part,) = sc.sea.waves.parts
+    said = re.search(r"Without a file: scenarios/(\S+) \(the 27 m CTV (\S+) pushing ([\d.]+) kN in JONSWAP Hs ([\d.]+) m, "
+                     r"Tp ([\d.]+) s, head seas\)", text)
+    assert said, text
+    assert said.group(1) == default_scenario_path().name and said.group(2) == sc.vessel.database
+    assert float(said.group(3)) * 1e3 == sc.thrust.force
+    assert float(said.group(4)) == part.Hs and float(said.group(5)) == part.Tp and part.kind == "jonswap"
+    assert (part.direction_deg - sc.vessel.heading_deg) % 360 == 180.0          # head seas
