@@ -51,10 +51,23 @@ def heading_polar(ax, *, rlabel: str | None = None) -> None:
         ax.text(np.radians(157.5), ax.get_rmax() * 1.12, rlabel, fontsize=8, ha="center", va="center")
 
 
+def figure_title(fig) -> str:
+    """The title a reader sees: the figure's suptitle, else the first axes' title ("" if none)."""
+    sup = getattr(fig, "_suptitle", None)
+    if sup is not None and sup.get_text():
+        return sup.get_text()
+    return next((ax.get_title() for ax in fig.axes if ax.get_title()), "")
+
+
 def save_figure(fig, path: str | Path, *, dpi: int = 110) -> Path:
-    """Save ``fig`` to ``path`` (format from the suffix) and close it."""
+    """Save ``fig`` to ``path`` (format from the suffix) and close it. A PNG carries its title in its
+    ``Title`` text chunk (:func:`figure_title`; what ``docs/make_figures.py``'s test reads back) and
+    ``Software`` = boatland and its version."""
+    from boatland import __version__
+
     plt = pyplot()
     path = Path(path)
-    fig.savefig(path, dpi=dpi)
+    meta = {"Title": figure_title(fig), "Software": f"boatland {__version__}"} if path.suffix.lower() == ".png" else None
+    fig.savefig(path, dpi=dpi, metadata=meta)
     plt.close(fig)
     return path

@@ -27,6 +27,7 @@ sys.path.insert(0, str(ROOT))
 from boatland.freqdomain import LandingSetup, free_rao  # noqa: E402
 from boatland.freqdomain.screening import landed_response  # noqa: E402
 from boatland.checks.files import load_checked  # noqa: E402
+from boatland.plotstyle import save_figure  # noqa: E402
 
 T = np.linspace(3.0, 15.0, 121)
 W = 2 * np.pi / T
@@ -75,9 +76,9 @@ def main(path: Path = ROOT / "docs" / "rao_ctv27_vs_ctv24.png") -> None:
         a.grid(alpha=0.3)
         a.legend(fontsize=7)
     fig.suptitle("Default CTV (ctv27) vs the Wigley ctv24 — open sea RAOs; landed beside the pile in each "
-                 "vessel's own landing scenario", fontsize=10)
+                 "vessel's own landing scenario (ctv_landing, ctv24_landing)", fontsize=10)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    save_figure(fig, path)
     print(f"wrote {path}")
     print(f"{'T [s]':>6} " + " ".join(f"{lab.split()[0] + ' ' + k:>22}" for lab, _, _ in data
                                      for k in ("heave180", "pitch180", "Fz kN/m", "Fz/cap")))

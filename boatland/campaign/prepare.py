@@ -138,12 +138,32 @@ def _checked(campaign: Campaign, load_database) -> dict:
             found = check(sc, db, memory=memory, setup=setup)
             where = f"case {case.index} ({case.label() or 'base'})"
             problems += [(f"{where}: {k}", m) for k, m in found.problems]
-            warns += [f"{where}: {k}: {m}" for k, m in found.warnings]
+            warns += [(case.index, where, f"{k}: {m}") for k, m in found.warnings]
     if problems:
         raise SpecError(campaign.source, problems)
     _CHECKED.clear()                               # one campaign at a time: bounded memory
-    _CHECKED[key] = {"warnings": tuple(dict.fromkeys(warns)), "dbs": dbs, "memories": memories, "setups": setups}
+    _CHECKED[key] = {"warnings": _grouped(warns, len(campaign.cases)), "dbs": dbs, "memories": memories,
+                     "setups": setups}
     return _CHECKED[key]
+
+
+def _grouped(warns, n_cases: int) -> tuple[str, ...]:
+    """One line per warning text: the case that gave it, or the cases that gave the same ("cases 0–23 (all
+    24): …") — a campaign's cases often share their vessel's warnings."""
+    by_text: dict[str, list] = {}
+    for index, where, text in warns:
+        by_text.setdefault(text, []).append((index, where))
+    lines = []
+    for text, cases in by_text.items():
+        cases = sorted(dict.fromkeys(cases))
+        if len(cases) == 1:
+            lines.append(f"{cases[0][1]}: {text}")
+            continue
+        idx = [i for i, _ in cases]
+        span = f"{idx[0]}–{idx[-1]}" if idx == list(range(idx[0], idx[-1] + 1)) else ", ".join(map(str, idx))
+        every = f" (all {n_cases})" if len(idx) == n_cases else f" ({len(idx)} of {n_cases})"
+        lines.append(f"cases {span}{every}: {text}")
+    return tuple(lines)
 
 
 def prepare_cases(campaign: Campaign, load_database, cases=None) -> dict[int, CaseData]:

@@ -397,9 +397,17 @@ def _limiting_tables(dec: Decision, out):
 
 
 # ------------------------------------------------------------------------------------------------ figures
+def _source(campaign: str, inputs: dict) -> str:
+    """What a figure was made from, for its title: the campaign, its scenario and vessel."""
+    made = ", ".join(str(inputs[k]) for k in ("scenario", "vessel") if inputs.get(k))
+    return f"{campaign} ({made})" if made else campaign
+
+
 def _title(dec: Decision, what: str) -> str:
     fixed = fixed_text(dec.inputs, dec.axes)
-    return f"{dec.campaign}: {what}" + (f"\n{fixed}" if fixed else "")
+    head = f"{_source(dec.campaign, dec.inputs)}:"
+    sep = " " if len(head) + len(what) < 70 else "\n"          # a long title on lines of its own
+    return f"{head}{sep}{what}" + (f"\n{fixed}" if fixed else "")
 
 
 def figure_p_vs_hs(dec: Decision):
@@ -592,11 +600,12 @@ def _isee_report(data, out: Path, incident: str | None, figures: bool) -> tuple[
                                f"Limiting Hs at P({inc} within the access) = {acc:g}: time domain by ISEE (95 % "
                                "interval), the linear model, the frequency-domain screening")
     if figures:
-        files += _isee_figures(runs, lim, plan, inc, out)
+        files += _isee_figures(runs, lim, plan, inc, out,
+                               _source(data["header"].get("campaign", ""), inputs_from_header(data["header"])))
     return inc, files
 
 
-def _isee_figures(runs, lim, plan, inc, out):
+def _isee_figures(runs, lim, plan, inc, out, source: str):
     from boatland.plotstyle import heading_polar, pyplot
 
     plt = pyplot()
@@ -610,7 +619,7 @@ def _isee_figures(runs, lim, plan, inc, out):
         ax.errorbar(r["hs"], p, yerr=[np.maximum(p - lo, 0), np.maximum(hi - p, 0)], marker="o", capsize=3,
                     label=_fmt(r["label"][0]) or "base")
     ax.set(xlabel="Hs [m]", ylabel=f"P({inc} within the access)", yscale="log",
-           title="ISEE: time domain on the sampled seas (95 %)")
+           title=f"{source}: ISEE, time domain on the sampled seas (95 %)")
     ax.grid(alpha=0.3, which="both")
     if runs.size <= 40:
         ax.legend(fontsize=7)
@@ -636,7 +645,8 @@ def _isee_figures(runs, lim, plan, inc, out):
                     label=f"{label}: screening ({stat})" if inc == ONSET else f"{label}: screening ({ONSET}, {stat})")
         heading_polar(ax)
         acc = float(lim["accept"][0])
-        ax.set_title(f"limiting Hs [m] at P({inc}) = {acc:g} per access\n(heading relative to the bow)", fontsize=9)
+        ax.set_title(f"{source}: limiting Hs [m] at P({inc}) = {acc:g} per access\n(heading relative to the bow)",
+                     fontsize=9)
         fig.legend(*ax.get_legend_handles_labels(), fontsize=6, loc="lower center", ncol=2, frameon=False)
         files.append(_save(fig, out / "limiting_hs_polar.png", tight=False))   # axes placed by hand
     return files

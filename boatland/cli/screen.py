@@ -210,7 +210,7 @@ def _shear_sweep(args, scenario, db, setup, beta, sea, depth) -> int:
 
         mu = setup.mu if args.mu is None else args.mu
         thrust = setup.thrust if args.thrust is None else args.thrust
-        plot_shear_sweep(sw, args.output, title=f"{scenario.name}: limiting Hs at Tp {sw.Tp:g} s against the fender's "
+        plot_shear_sweep(sw, args.output, title=f"{scenario.name}: {db.name}, limiting Hs at Tp {sw.Tp:g} s against the fender's "
                                                 f"shear stiffness\n{_sea_shape(scenario)}; push {thrust / 1e3:g} kN, "
                                                 f"μ {mu:g}; P = {sw.table.accept:g} per {args.access:g} s access "
                                                 f"({sw.table.statistics})")

@@ -62,6 +62,8 @@ def _title(log: RunLog, prov: dict) -> str:
     from boatland.scenario.inputs import short_inputs_text
 
     name = log.metadata.get("scenario_name", prov.get("scenario", log.path.stem))
+    if prov.get("database"):
+        name = f"{name} ({prov['database']})"
     inputs = prov.get("inputs", {})
     seed = log.metadata.get("seed", prov.get("seed", "?"))
     line1 = f"{name}: {short_inputs_text(inputs)}; seed {seed}" if inputs else f"{name} (seed {seed})"

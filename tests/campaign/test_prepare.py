@@ -122,3 +122,13 @@ def test_the_tables_of_every_case_are_made_together_beside_the_checks(mini, monk
         assert all(d is not None and len(d.tables) == 1 for d in data)
     finally:
         background.close()
+
+
+def test_warnings_the_cases_share_are_one_line():
+    """A warning every case gives (its vessel's, typically) is printed once with the cases that gave it."""
+    from boatland.campaign.prepare import _grouped
+
+    same = "radiation.method: slightly negative damping in the landed sway mode"
+    warns = [(i, f"case {i} (Tp={i})", same) for i in range(24)] + [(3, "case 3 (Tp=3)", "sea.Hs: high")]
+    assert _grouped(warns, 24) == (f"cases 0–23 (all 24): {same}", "case 3 (Tp=3): sea.Hs: high")
+    assert _grouped([(0, "case 0", same), (2, "case 2", same)], 4) == (f"cases 0, 2 (2 of 4): {same}",)
