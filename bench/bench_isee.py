@@ -75,7 +75,7 @@ def rare(hs: float = 0.15, cov: float = 0.102, before: Path | None = None) -> No
     (its store must hold the same estimate: the same samples, bit for bit)."""
     with tempfile.TemporaryDirectory() as d:
         tmp = Path(d)
-        camp = campaign(tmp, "rare", f"""duration = 1800.0
+        camp = campaign(tmp, "rare", f"""access = 1800.0
 [axes]
 "sea.Hs" = [{hs}]
 [isee]
@@ -125,7 +125,7 @@ DIRS = [180.0, 135.0, 90.0]
 def table() -> None:
     with tempfile.TemporaryDirectory() as d:
         tmp = Path(d)
-        camp = campaign(tmp, "table", f"""duration = 1800.0
+        camp = campaign(tmp, "table", f"""access = 1800.0
 [axes]
 "sea.Tp" = {TPS}
 "sea.relative_direction_deg" = {DIRS}

@@ -65,7 +65,7 @@ def main() -> None:
     long_demo = work / "demo600.toml"
     text = demo.read_text(encoding="utf-8").replace('scenario = "../ctv_landing.toml"',
                                                     f'scenario = "{demo.parent.parent / "ctv_landing.toml"}"')
-    long_demo.write_text("\n".join("duration = 600.0" if ln.startswith("duration =") else ln
+    long_demo.write_text("\n".join("access = 600.0" if ln.startswith("access =") else ln
                                    for ln in text.splitlines()) + "\n", encoding="utf-8")
     warm = str(work / "warm")
     rows = []

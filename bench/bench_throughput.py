@@ -8,7 +8,7 @@ right after it — before/after in the same run). Prints Markdown.
 
 The study: ``scenarios/campaigns/table414.toml``'s shape — ctv24, 80 kN, Hs 0.3 m, Tp 5/7/9 s ×
 180/135/90° (9 sea states), 8 seeds (72 trials), state-space memory, the pile's scattered wave —
-with its ``duration`` (the access: the exposure after the 20 s settling and the 2 Tp wave ramp) set to
+with its ``access`` (the exposure after the 20 s settling and the 2 Tp wave ramp) set to
 each access. Steps are every step a trial integrates (settling and ramp included), dt = 0.05 s.
 
 1. **Per trial, this process, one core**: the first seed of each of the 9 cases, timed round-robin
@@ -59,9 +59,9 @@ STUDY = REPO / "scenarios" / "campaigns" / "table414.toml"
 
 
 def study_file(tmp: Path, access: float, seeds: int = 8) -> Path:
-    """table414.toml with ``duration`` = access (and ``seeds``), its scenario path made absolute."""
+    """table414.toml with its ``access`` set (and ``seeds``), its scenario path made absolute."""
     text = STUDY.read_text(encoding="utf-8")
-    text = re.sub(r"(?m)^duration = .*$", f"duration = {access:g}", text)
+    text = re.sub(r"(?m)^access = [^#\n]*", f"access = {access:g}  ", text)
     text = re.sub(r"(?m)^seeds = .*$", f"seeds = {seeds}", text)
     text = text.replace('"../ctv24_landing.toml"', f'"{(STUDY.parent / "../ctv24_landing.toml").resolve()}"')
     path = tmp / f"study_{access:g}_{seeds}.toml"

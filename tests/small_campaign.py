@@ -22,7 +22,7 @@ name = "{name}"
 scenario = "{REPO / 'scenarios' / 'ctv_landing.toml'}"
 seeds = 3
 master_seed = 5
-duration = 6.0
+access = 6.0
 [set]
 "radiation.method" = "state_space"
 [axes]

@@ -508,7 +508,7 @@ def isee_page(data: dict, incident: str, *, store: Path | None = None, figures: 
     header, plan, runs = data["header"], data["plan"], data["stats"]
     settings = json.loads(header.get("isee", "{}") or "{}")
     toml = _campaign_toml(header)
-    access = toml.get("duration")
+    access = toml.get("access", toml.get("duration"))   # "duration": the older name of the access
     lim = data.get("isee_limits")
     accept = float(lim["accept"][0]) if lim is not None and lim.size else settings.get("accept")
     onset = incident == ONSET

@@ -6,8 +6,8 @@ File format (``scenarios/campaigns/*.toml``)::
     scenario = "../ctv_landing.toml"     # the base scenario, relative to this file
     seeds = 8                            # trials per case (wave seeds)
     master_seed = 20261122               # every trial's seed derives from it (SeedSequence)
-    duration = 1800.0                    # [s] the access: exposure to the full sea, after the settling
-                                         # (thrust on) and the waves' start-up ramp
+    access = 1800.0                      # [s] the access: exposure to the full sea, after the settling
+                                         # (thrust on) and the waves' start-up ramp (older files: duration)
 
     [set]                                # fixed changes to the base scenario (key paths)
     "radiation.method" = "state_space"
@@ -42,6 +42,7 @@ from __future__ import annotations
 import hashlib
 import itertools
 import json
+import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -49,7 +50,7 @@ from typing import Any
 import numpy as np
 
 from boatland import __version__
-from boatland.errors import BoatlandInputError
+from boatland.errors import BoatlandInputError, BoatlandWarning
 from boatland.vessel.imported import database_files
 from boatland.scenario.scenario import Scenario
 from boatland.scenario.schema import SCENARIO_SCHEMA
@@ -91,8 +92,11 @@ CAMPAIGN_SCHEMA = Table({
                   doc="monte-carlo: N wave seeds per case; isee: importance sampling of the first slip"),
     "seeds": Key(int, ge=1, le=100000, doc="trials (wave seeds) per case (monte-carlo; required there)"),
     "master_seed": Key(int, default=0, ge=0, doc="master seed of every trial's wave seed"),
-    "duration": Key((int, float), gt=0.0, doc="[s] access duration: the exposure to the full sea; every trial "
-                                              "runs its settling and wave ramp first, then this long"),
+    "access": Key((int, float), gt=0.0, doc="[s] the access: the exposure to the full sea that the incidents "
+                                            "count over; every trial runs its settling and wave ramp first, then "
+                                            "this long"),
+    "duration": Key((int, float), gt=0.0, doc="[s] the older name of access (the same value; a scenario's "
+                                              "simulation.duration is the whole trial)"),
     "set": Table({}, optional=True, doc="fixed changes to the base scenario: key path → value"),
     "axes": Table({}, optional=True, doc="swept key paths → lists of values"),
     "incidents": SCENARIO_SCHEMA.entries["incidents"].overrides(),   # the scenario's keys, replacing its values
@@ -238,8 +242,6 @@ class Campaign:
     def input_files(self) -> list[Path]:
         """Every file the campaign reads: the campaign file, the base scenario, and the database files and
         measured-wave records of the base and of every case."""
-        import warnings
-
         files = [Path(self.source), Path(self.scenario_path)]
         with warnings.catch_warnings():      # the cases' warnings are the checks' to tell
             warnings.simplefilter("ignore")
@@ -290,6 +292,12 @@ def load_campaign(path: str | Path, *, load_scenario) -> Campaign:
         if not isinstance(table, dict):
             problems.add(name, f"must be a table of key paths, got {type(table).__name__}")
     method = data.get("method", "monte-carlo")
+    if "access" in data and "duration" in data:
+        problems.add("duration", "give access only (duration is its older name)")
+    if "duration" in data and "access" not in data:
+        warnings.warn(f"{path}: duration = {data['duration']:g}: the access (the exposure after the settling and "
+                      f"the wave ramp); write access = {data['duration']:g} — a scenario's simulation.duration is "
+                      "the whole trial", BoatlandWarning, stacklevel=2)
     if method == "monte-carlo" and "seeds" not in data and not problems.has("seeds"):
         problems.add("seeds", "missing: a monte-carlo campaign runs this many trials (wave seeds) per case")
     isee = _isee_settings(data.get("isee") or {}, problems)
@@ -326,7 +334,8 @@ def load_campaign(path: str | Path, *, load_scenario) -> Campaign:
     return Campaign(name=data["name"], description=data.get("description", ""), source=str(path),
                     scenario_path=base_path, base=base, axes=axes, seeds=int(data.get("seeds", 1)),
                     master_seed=int(data.get("master_seed", 0)), keep_series=keep, document=doc,
-                    access=float(data["duration"]) if "duration" in data else None, method=method, isee=isee)
+                    access=float(data.get("access", data.get("duration"))) if ("access" in data or "duration" in data)
+                    else None, method=method, isee=isee)
 
 
 def _isee_settings(d: dict, problems: Problems) -> IseeSettings:

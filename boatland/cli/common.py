@@ -50,12 +50,14 @@ def with_overrides(scenario, changes: dict, flags: dict):
         raise BoatlandInputError(f"{given}: {why}") from None
 
 
-def load_guarded(path, outputs, extra_inputs=(), changes=None, flags=None):
+def load_guarded(path, outputs, extra_inputs=(), changes=None, flags=None, derived=None):
     """Load a scenario for a command: parse and validate it, apply the flags' ``changes``, check the
     outputs against every file it reads (before anything heavy), then read its database and run every
     check (:func:`boatland.checks.files.check_loaded`). Warnings are returned, not printed.
 
-    ``outputs`` is a list of :class:`boatland.cli.guard.Output` or a callable ``outputs(scenario)``.
+    ``outputs`` is a list of :class:`boatland.cli.guard.Output` or a callable ``outputs(scenario)``;
+    ``derived``, a callable ``derived(scenario) -> (changes, flags)``: changes that depend on the changed
+    scenario (``run --access``: the duration from its settling and wave ramp), applied after ``changes``.
     Returns (scenario, db, warnings, setup): ``setup`` the :class:`boatland.landing.setup.Setup` the checks
     looked at.
     """
@@ -68,6 +70,8 @@ def load_guarded(path, outputs, extra_inputs=(), changes=None, flags=None):
         warnings.simplefilter("always")
         scenario = load(path or default_scenario_path())
         scenario = with_overrides(scenario, changes or {}, flags or {})
+        if derived is not None:
+            scenario = with_overrides(scenario, *derived(scenario))
         outs = outputs(scenario) if callable(outputs) else outputs
         check_outputs(outs, [*scenario_inputs(scenario), *extra_inputs])
         db, found = check_loaded(scenario)

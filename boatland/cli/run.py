@@ -40,7 +40,12 @@ def add_parser(sub) -> None:
     run.add_argument("-o", "--output", type=Path,
                      help="write the time series, events and summary (netCDF-4/HDF5: xarray.open_dataset opens it "
                           "with named dimensions and units)")
-    run.add_argument("--duration", type=positive("s"), help="override simulation.duration [s]")
+    length = run.add_mutually_exclusive_group()
+    length.add_argument("--duration", type=positive("s"),
+                        help="the whole trial [s], settling and wave ramp included (overrides simulation.duration)")
+    length.add_argument("--access", type=positive("s"), metavar="S",
+                        help="the access [s]: how long the full sea lasts after the settling and the wave ramp — the "
+                             "time a campaign's incidents count over (its access); the trial runs that much longer")
     run.add_argument("--accept", type=accept_arg, default="best", metavar="P",
                      help="accepted probability of an incident per 30-min access, in (0, 1), or a preset of Grøtting "
                           "(2015) Table 2.1: best (1.19e-3, default), conservative (2e-5), non-conservative (2.681e-2)")
@@ -81,13 +86,25 @@ def cmd(args) -> int:
     changes = {k: v for k, v in (("simulation.duration", args.duration), ("simulation.seed", args.seed))
                if v is not None}
     changes, flags = settings_changes(args, changes, {"simulation.duration": "--duration", "simulation.seed": "--seed"})
-    scenario, db, warns, setup = load_guarded(path, lambda sc: _outputs(args, sc), changes=changes, flags=flags)
-    check_fits_in_memory(setup, flag="--duration" if args.duration is not None else f"{scenario.source}: "
-                                                                                    "simulation.duration")
+    derived = None
+    if args.access is not None:
+        from boatland.trial.simulate import exposure_start
+
+        derived = lambda sc: ({"simulation.duration": exposure_start(sc) + args.access},  # noqa: E731
+                              {"simulation.duration": f"--access {args.access:g}: a trial of"})
+    scenario, db, warns, setup = load_guarded(path, lambda sc: _outputs(args, sc), changes=changes, flags=flags,
+                                              derived=derived)
+    check_fits_in_memory(setup, flag="--duration" if args.duration is not None else "--access" if args.access is not None
+                         else f"{scenario.source}: simulation.duration")
     sinks, log_path, live = _recording_sinks(args, scenario)
     compile_notice()
     if not args.json:
-        print(f"running {scenario.name}: {scenario.simulation.duration:g} s at dt = {setup.dt:g} s "
+        from boatland.trial.simulate import exposure_start
+
+        T, start = scenario.simulation.duration, exposure_start(scenario)
+        parts = (f"{start:g} s of settling and wave ramp, then {T - start:g} s of the full sea (the access)"
+                 if T > start else f"the waves still ramping in at the end ({start:g} s to the full sea)")
+        print(f"running {scenario.name}: {T:g} s — {parts} — at dt = {setup.dt:g} s "
               f"({setup.n_steps} steps), {db.name}, radiation {scenario.radiation.method}", file=sys.stderr)
         for line in setup.environment.lines(scenario):
             print(f"  {line}", file=sys.stderr)

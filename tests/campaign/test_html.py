@@ -250,7 +250,7 @@ name = "{name}"
 scenario = "{REPO / 'scenarios' / 'ctv24_landing.toml'}"
 method = "isee"
 master_seed = 17
-duration = 20.0
+access = 20.0
 [axes]
 "sea.relative_direction_deg" = [180.0, 90.0]
 [isee]

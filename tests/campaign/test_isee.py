@@ -39,7 +39,7 @@ name = "{name}"
 scenario = "{BASE}"
 method = "isee"
 master_seed = 17
-duration = 20.0
+access = 20.0
 [axes]
 {axes}
 [isee]
@@ -184,7 +184,7 @@ def test_bad_isee_campaigns_are_one_clear_error(tmp_path, old, new, args, expect
 
 def test_save_worst_needs_isee(tmp_path):
     camp = tmp_path / "mc.toml"
-    camp.write_text(f'name = "mc"\nscenario = "{BASE}"\nseeds = 2\nduration = 10.0\n')
+    camp.write_text(f'name = "mc"\nscenario = "{BASE}"\nseeds = 2\naccess = 10.0\n')
     r = run("campaign", camp, "-o", tmp_path / "mc.h5", "--save-worst", "3")
     assert r.returncode == 2 and "--save-worst" in r.stderr and "Traceback" not in r.stderr
 
@@ -202,7 +202,7 @@ name = "slide"
 scenario = "{REPO / 'scenarios' / 'ctv_landing.toml'}"
 method = "{method}"
 master_seed = 3
-duration = 150.0
+access = 150.0
 {"seeds = 12" if method == "monte-carlo" else ""}
 [set]
 "sea.Hs" = 0.8

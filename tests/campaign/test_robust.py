@@ -24,7 +24,7 @@ def run(*args, env=None, timeout=600):
 
 def blowup_campaign(tmp_path):
     path = tmp_path / "blowup.toml"
-    path.write_text(f'name = "blowup"\nscenario = "{DECAY}"\nseeds = 2\nduration = 20.0\n[axes]\n'
+    path.write_text(f'name = "blowup"\nscenario = "{DECAY}"\nseeds = 2\naccess = 20.0\n[axes]\n'
                     '"initial.velocity" = [[0.0, 0.0, 0.0], [40.0, 0.0, 0.0]]\n')
     return path
 
@@ -47,7 +47,7 @@ def test_a_blown_up_trial_is_reported_failed_and_left_out_of_p(tmp_path):
 
 def long_campaign(tmp_path, name="long", seeds=60):
     path = tmp_path / f"{name}.toml"
-    path.write_text(f'name = "{name}"\nscenario = "{DECAY}"\nseeds = {seeds}\nduration = 600.0\n[axes]\n'
+    path.write_text(f'name = "{name}"\nscenario = "{DECAY}"\nseeds = {seeds}\naccess = 600.0\n[axes]\n'
                     '"initial.displacement" = [[0.0, 0.0, 0.3], [0.0, 0.0, 0.2]]\n')
     return path
 

@@ -21,7 +21,7 @@ name = "{name}"
 scenario = "{BASE}"
 seeds = {seeds}
 master_seed = 11
-duration = {duration}
+access = {duration}
 [set]
 "radiation.method" = "{method}"
 [axes]

@@ -92,15 +92,15 @@ def inputs(tmp_path_factory):
     (d / "scatter_empty.csv").write_text("")
     (d / "scatter_text.csv").write_text("Hs;Tp\nbig;small\n")
     (d / "vessel.toml").write_text((REPO / "scenarios" / "vessels" / "model2.toml").read_text())
-    (d / "c.toml").write_text('name = "c"\nscenario = "x.toml"\nseeds = 2\nduration = 30.0\n[axes]\n'
+    (d / "c.toml").write_text('name = "c"\nscenario = "x.toml"\nseeds = 2\naccess = 30.0\n[axes]\n'
                               '"sea.Hs" = [0.3, 0.6]\n')
-    (d / "c_hs50.toml").write_text('name = "c"\nscenario = "x.toml"\nseeds = 2\nduration = 30.0\n[axes]\n'
+    (d / "c_hs50.toml").write_text('name = "c"\nscenario = "x.toml"\nseeds = 2\naccess = 30.0\n[axes]\n'
                                    '"sea.Hs" = [0.3, 50.0]\n')
-    (d / "c_nan.toml").write_text('name = "c"\nscenario = "x.toml"\nseeds = 2\nduration = nan\n')
+    (d / "c_nan.toml").write_text('name = "c"\nscenario = "x.toml"\nseeds = 2\naccess = nan\n')
     (d / "c_seeds0.toml").write_text('name = "c"\nscenario = "x.toml"\nseeds = 0\n')
     (d / "c_unknown.toml").write_text('name = "c"\nscenario = "x.toml"\nseeds = 2\nseedz = 3\n')
     (d / "c_noscen.toml").write_text('name = "c"\nscenario = "nope.toml"\nseeds = 2\n')
-    (d / "c_huge.toml").write_text('name = "c"\nscenario = "x.toml"\nseeds = 2\nduration = 1e11\n')
+    (d / "c_huge.toml").write_text('name = "c"\nscenario = "x.toml"\nseeds = 2\naccess = 1e11\n')
     import h5py
     import numpy as np
 

@@ -89,7 +89,7 @@ name = "three_rare"
 scenario = "{path}"
 method = "isee"
 master_seed = 5
-duration = 60.0
+access = 60.0
 [axes]
 "sea.Hs" = [0.35]
 [isee]

@@ -149,7 +149,7 @@ def test_replay_serve_and_a_campaign_open_nothing_wider(tmp_path):
     assert seen <= {("127.0.0.1", port)}, seen
     camp = tmp_path / "c.toml"
     camp.write_text(f'name = "c"\nscenario = "{REPO / "scenarios" / "ctv_free_decay.toml"}"\nseeds = 6\n'
-                    'duration = 300.0\n')
+                    'access = 300.0\n')
     code, out, err, seen = watch(["campaign", camp, "-o", tmp_path / "c.h5", "--workers", "2"])
     assert code == 0, err
     assert seen == set(), seen

@@ -62,7 +62,7 @@ name = "{name}"
 scenario = "{REPO / 'scenarios' / 'ctv24_landing.toml'}"
 method = "isee"
 master_seed = 2026
-duration = 60.0
+access = 60.0
 [axes]
 "sea.Hs" = [{", ".join(str(h) for h in hs)}]
 "sea.relative_direction_deg" = [{direction}]
@@ -226,7 +226,7 @@ name = "slide"
 scenario = "{REPO / 'scenarios' / 'ctv_landing.toml'}"
 method = "isee"
 master_seed = 2026
-duration = 60.0
+access = 60.0
 [set]
 "sea.Tp" = 7.0
 [axes]
