@@ -281,10 +281,32 @@ def kernels_cached() -> bool:
         return True
 
 
-def compile_notice() -> None:
-    """One line on stderr when the kernels have to be compiled before the first trial."""
-    if not kernels_cached():
-        print("compiling kernels (first run only, about half a minute) …", file=sys.stderr, flush=True)
+def compile_notice(every: float = 15.0, poll: float = 1.0, give_up: float = 900.0):
+    """When the kernels have to be compiled before the first trial: one line on stderr, then "… still
+    compiling (N s)" every ``every`` seconds and "compiled in N s" once numba's cache holds them (a daemon
+    thread that looks every ``poll`` seconds, for at most ``give_up``). Returns that thread (None: cached)."""
+    import threading
+    import time
+
+    if kernels_cached():
+        return None
+    print("compiling kernels (first run only, about a minute) …", file=sys.stderr, flush=True)
+    t0 = time.monotonic()
+
+    def tick():
+        said = t0
+        while time.monotonic() - t0 < give_up:
+            time.sleep(poll)
+            if kernels_cached():
+                print(f"  compiled in {time.monotonic() - t0:.0f} s", file=sys.stderr, flush=True)
+                return
+            if time.monotonic() - said >= every:
+                said = time.monotonic()
+                print(f"  … still compiling ({said - t0:.0f} s)", file=sys.stderr, flush=True)
+
+    thread = threading.Thread(target=tick, name="boatland-compile-notice", daemon=True)
+    thread.start()
+    return thread
 
 
 def _json_safe(obj):

@@ -3,6 +3,7 @@ refusals before any work, and the run's verdict output."""
 
 import json
 import re
+import time
 from pathlib import Path
 
 import pytest
@@ -95,12 +96,17 @@ def test_compile_notice_only_when_the_kernels_are_not_cached(monkeypatch, capsys
     from boatland.cli import common
 
     assert common.kernels_cached() in (True, False)
-    monkeypatch.setattr(common, "kernels_cached", lambda: False)
-    common.compile_notice()
-    assert capsys.readouterr().err.strip() == "compiling kernels (first run only, about half a minute) …"
-    monkeypatch.setattr(common, "kernels_cached", lambda: True)
-    common.compile_notice()
-    assert capsys.readouterr().err == ""
+    cached = [False]
+    monkeypatch.setattr(common, "kernels_cached", lambda: cached[0])
+    ticker = common.compile_notice(every=0.05, poll=0.01)
+    time.sleep(0.3)
+    cached[0] = True                                   # numba has written its cache: the notice ends
+    ticker.join(5.0)
+    lines = capsys.readouterr().err.strip().splitlines()
+    assert lines[0] == "compiling kernels (first run only, about a minute) …"
+    assert any(ln.startswith("  … still compiling (") for ln in lines[1:-1]) and lines[-1].startswith("  compiled in ")
+    assert not ticker.is_alive()
+    assert common.compile_notice() is None and capsys.readouterr().err == ""
 
 
 @pytest.mark.parametrize("command", [["run"], ["replay"], ["plot"], ["campaign"], ["report"], ["scenario", "check"],
