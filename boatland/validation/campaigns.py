@@ -42,11 +42,11 @@ def _toml(v) -> str:
     return repr(float(v)) if isinstance(v, float) else repr(v)
 
 
-def write_campaign(path: Path, name: str, scenario: Path, *, seeds: int, master_seed: int, duration: float,
+def write_campaign(path: Path, name: str, scenario: Path, *, seeds: int, master_seed: int, access: float,
                    set_: dict | None = None, axes: dict, incidents: dict | None = None) -> Path:
     """Write a campaign file (the format of :mod:`boatland.campaign.plan`) and return its path."""
     lines = [f"name = {_toml(name)}", f"scenario = {_toml(str(Path(scenario).resolve()))}", f"seeds = {seeds}",
-             f"master_seed = {master_seed}", f"duration = {float(duration)!r}"]
+             f"master_seed = {master_seed}", f"access = {float(access)!r}"]
     for table, body in (("set", set_), ("axes", axes), ("incidents", incidents)):
         if body:
             lines.append(f"[{table}]")
@@ -183,7 +183,7 @@ def run_trends(ctx: Context) -> Outcome:
     ctx.progress(f"  trends: {scenario.vessel.database}, H_s {hs:g} m (screening: P = 0.5 per {TRENDS_ACCESS:g} s "
                  f"in head seas at Tp {TRENDS_TP:g} s)")
     checks, notes = [], []
-    common = dict(seeds=seeds, master_seed=77, duration=access, set_=TRENDS_SET,
+    common = dict(seeds=seeds, master_seed=77, access=access, set_=TRENDS_SET,
                   incidents={"slip_distance": [0.1]})
     f = write_campaign(ctx.work / "heading.toml", "heading", path,
                        axes={"sea.Hs": [hs], "sea.Tp": [TRENDS_TP], "sea.relative_direction_deg": list(HEADINGS)},
@@ -299,7 +299,7 @@ def fd_vs_td_campaign(folder: Path, heading: float, hs, *, seeds: int = 24, scen
     if scenario is None:
         scenario = validation_scenario_path()
     return write_campaign(Path(folder) / f"{name}_{heading:g}.toml", f"{name}_{heading:g}", scenario,
-                          seeds=seeds, master_seed=2026, duration=FD_TD_ACCESS,
+                          seeds=seeds, master_seed=2026, access=FD_TD_ACCESS,
                           set_={"sea.Tp": FD_TD_TP, "sea.relative_direction_deg": float(heading), **(set_ or {})},
                           axes={"sea.Hs": [float(h) for h in hs]})
 

@@ -21,7 +21,7 @@ BASE = Path(__file__).resolve().parents[2] / "scenarios" / "ctv24_landing.toml" 
 def study(tmp_path, axes: dict, name: str):
     """A campaign of the base scenario, 6 seeds × 10 min (boatland.validation.campaigns: the code of
     `boatland validate`'s grotting-trends case)."""
-    f = write_campaign(tmp_path / "campaigns" / f"{name}.toml", name, BASE, seeds=6, master_seed=77, duration=600.0,
+    f = write_campaign(tmp_path / "campaigns" / f"{name}.toml", name, BASE, seeds=6, master_seed=77, access=600.0,
                        set_=TRENDS_SET, axes=axes, incidents={"slip_distance": [0.1]})
     c, t, _ = run_study(f, tmp_path / f"{name}.h5", workers=2)
     ok = completed(t)                                  # completed, or ended sliding off the landing (an outcome)
