@@ -31,7 +31,7 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
         campaign(demo, tmp / "warm.h5", 1)  # numba caches warm
-        print("| campaign | trials × simulated s | workers | wall [s] | trials/s | simulated steps/s |")
+        print("| campaign | trials × access [s] | workers | wall [s] | trials/s | simulated steps/s |")
         print("|---|---|---|---|---|---|")
         for path, trials, seconds in ((demo, 32, 140.0), (study, 72, 1800.0)):
             for workers in (1, 2):
