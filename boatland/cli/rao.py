@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import sys
 from pathlib import Path
 
 from boatland.cli.common import freq_directions, freq_load, freq_sea, scenario_argument
@@ -115,6 +116,9 @@ def _compare_open_sea(scenario, db, setup, args) -> None:
     x0, y0, psi = scenario.start_pose()
     px, py = scenario.landing.monopile_position
     wf = np.linspace(max(2 * np.pi / 25.0, db.omega[0]), db.omega[-1], 200)
+    if not args.json:                   # the pile's scattered wave over the hull mesh: ~10 s, one call
+        print("--compare-open-sea: the pile's scattered wave on the hull, every frequency and heading …",
+              file=sys.stderr, flush=True)
     open_sea, near = rao_with_pile(db, wf, (x0 - px, y0 - py), float(np.degrees(psi)),
                                    scenario.landing.monopile_diameter / 2,
                                    additional_damping=setup.additional_damping)
