@@ -25,18 +25,17 @@ def scenario_path(name: str | Path | None = None) -> Path:
     ``"model2_j03"``); None: the default trial (``scenarios/ctv_landing.toml``)."""
     from boatland.errors import BoatlandInputError
     from boatland.checks.files import default_scenario_path
+    from boatland.resources import shipped_file, shipped_names
 
     if name is None:
         return default_scenario_path()
     path = Path(name)
     if path.exists():
         return path
-    shipped = default_scenario_path().parent
-    for candidate in (shipped / f"{name}", shipped / f"{name}.toml"):
-        if candidate.is_file() and "/" not in str(name):
-            return candidate
-    names = ", ".join(sorted(p.stem for p in shipped.glob("*.toml")))
-    raise BoatlandInputError(f"{name}: no such file, and not a shipped scenario ({names})")
+    found = shipped_file(str(name))
+    if found is not None:
+        return found
+    raise BoatlandInputError(f"{name}: no such file, and not a shipped scenario ({', '.join(shipped_names())})")
 
 
 def _changes(changes: Mapping[str, Any] | None, overrides: dict) -> dict:

@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 from PIL import Image
 
-from boatland.cli.common import shipped_names
+from boatland.resources import shipped_names
 
 ROOT = Path(__file__).resolve().parents[1]
 _spec = importlib.util.spec_from_file_location("make_figures", ROOT / "docs" / "make_figures.py")
@@ -39,3 +39,10 @@ def test_the_screenshot_is_named_by_its_caption():
     caption = next(line for line in (ROOT / "README.md").read_text(encoding="utf-8").splitlines()
                    if f"(docs/{shot.file})" in line and line.startswith("!["))
     assert shot.source in caption and shot.vessel in caption, caption
+
+
+def test_the_viewer_for_the_screenshot_listens_on_loopback_only(tmp_path):
+    """The ``rerun`` command binds 0.0.0.0 unless told otherwise: the script tells it 127.0.0.1."""
+    argv = make_figures._argv(("rerun", "{tmp}/run.rrd", "--screenshot-to", "{out}"), tmp_path, tmp_path / "x.png")
+    i = argv.index("--bind")
+    assert argv[i + 1] == "127.0.0.1" and str(tmp_path / "run.rrd") in argv

@@ -331,11 +331,11 @@ def load_campaign(path: str | Path, *, load_scenario) -> Campaign:
     bad = [k for k in keep if k >= n_trials]
     if bad:
         raise SpecError(str(path), [("store.keep_series", f"trial numbers {bad} do not exist (0 … {n_trials - 1})")])
+    access = data.get("access", data.get("duration"))      # "duration": its older name
     return Campaign(name=data["name"], description=data.get("description", ""), source=str(path),
                     scenario_path=base_path, base=base, axes=axes, seeds=int(data.get("seeds", 1)),
                     master_seed=int(data.get("master_seed", 0)), keep_series=keep, document=doc,
-                    access=float(data.get("access", data.get("duration"))) if ("access" in data or "duration" in data)
-                    else None, method=method, isee=isee)
+                    access=None if access is None else float(access), method=method, isee=isee)
 
 
 def _isee_settings(d: dict, problems: Problems) -> IseeSettings:

@@ -10,7 +10,7 @@ from pathlib import Path
 from boatland.cli.guard import in_range, positive
 from boatland.errors import BoatlandInputError
 
-__all__ = ["DEFAULT_VESSEL", "shipped_or_path", "shipped_names", "parse_setting", "set_option", "settings_changes",
+__all__ = ["DEFAULT_VESSEL", "shipped_or_path", "parse_setting", "set_option", "settings_changes",
            "scenario_argument", "screening_options", "freq_load", "freq_sea",
            "freq_check", "freq_setup", "scenario_inputs", "load_guarded", "with_overrides", "check_fits_in_memory",
            "available_memory", "compile_notice", "kernels_cached", "print_json"]
@@ -43,8 +43,8 @@ def with_overrides(scenario, changes: dict, flags: dict):
     try:
         return scenario.replace(changes)
     except SpecError as exc:
-        show = lambda k, v: f"{v:g}" if isinstance(v, float) else str(v)  # noqa: E731
-        given = ", ".join(f"{flags[k]}{show(k, v)}" if flags[k].endswith("=") else f"{flags[k]} {show(k, v)}"
+        show = lambda v: f"{v:g}" if isinstance(v, float) else str(v)  # noqa: E731
+        given = ", ".join(f"{flags[k]}{show(v)}" if flags[k].endswith("=") else f"{flags[k]} {show(v)}"
                           for k, v in changes.items())
         why = "; ".join(f"{k}: {m}" if k else m for k, m in exc.problems)
         raise BoatlandInputError(f"{given}: {why}") from None
@@ -114,37 +114,27 @@ def check_fits_in_memory(setup, *, flag: str = "simulation.duration", copies: in
 
 def shipped_or_path(kind: str):
     """An argparse ``type`` for a scenario (``kind`` "scenario") or campaign ("campaign") file: a path that
-    exists, else the name of one shipped with boatland (``ctv_landing``, ``ctv24_landing``; ``demo``,
-    ``isee_rare``, ``table414``; with or without ``.toml``), else the path as given (its loader then says
+    exists, else the name of one shipped with boatland (:func:`boatland.resources.shipped_file`:
+    ``ctv24_landing``, ``demo``, with or without ``.toml``), else the path as given (its loader then says
     the file is missing); a bare name that is neither is refused with the shipped names."""
     import argparse
 
+    from boatland.resources import shipped_file, shipped_names
+
     def parse(text: str) -> Path:
         path = Path(text)
-        if path.exists() or os.sep in text or "/" in text:
+        if path.exists():
             return path
-        shipped = _shipped_folder(kind)
-        for candidate in (shipped / text, shipped / f"{text}.toml"):
-            if candidate.is_file():
-                return candidate
-        if path.suffix:           # a file name: its loader says it is missing, as for any path
+        found = shipped_file(text, kind)
+        if found is not None:
+            return found
+        if path.suffix or os.sep in text or "/" in text:   # a file's path: its loader says it is missing
             return path
-        names = ", ".join(shipped_names(kind))
-        raise argparse.ArgumentTypeError(f"{text}: no such file, and not a shipped {kind} ({names})")
+        raise argparse.ArgumentTypeError(f"{text}: no such file, and not a shipped {kind} "
+                                         f"({', '.join(shipped_names(kind))})")
 
     parse.__name__ = f"{kind} file"
     return parse
-
-
-def _shipped_folder(kind: str) -> Path:
-    from boatland.resources import shipped_scenarios
-
-    return shipped_scenarios() / "campaigns" if kind == "campaign" else shipped_scenarios()
-
-
-def shipped_names(kind: str) -> list[str]:
-    """The names of the scenarios (``kind`` "scenario") or campaigns ("campaign") shipped with boatland."""
-    return sorted(p.stem for p in _shipped_folder(kind).glob("*.toml"))
 
 
 def parse_setting(text: str) -> tuple[str, object]:

@@ -91,8 +91,8 @@ def cmd(args) -> int:
         except IRFNotDecayed as exc:
             if t_max == lengths[-1]:
                 raise
-            print(f"note: T_K = {t_max:g} s is too short ({str(exc).split(' (')[0]}); trying {2 * t_max:g} s",
-                  file=sys.stderr)
+            print(f"note: T_K = {t_max:g} s is too short (K[{exc.pair}] has not decayed by it); trying "
+                  f"{2 * t_max:g} s", file=sys.stderr)
     print(json.dumps(irf_summary(memory), indent=2) if args.json else irf_table(memory))
     if args.plot:
         plot_irf(db, memory, args.plot)

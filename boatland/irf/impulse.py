@@ -51,7 +51,15 @@ class IRFError(BoatlandInputError):
 
 
 class IRFNotDecayed(IRFError):
-    """K has not decayed by T_K: a longer memory is needed (the message says how long to try)."""
+    """K has not decayed by T_K: a longer memory is needed (the message says how long to try);
+    ``pair`` names the DOF pair, ``t_max`` is the T_K it was computed over."""
+
+    def __init__(self, message: str, pair: str, t_max: float):
+        super().__init__(message)
+        self.pair, self.t_max = pair, t_max
+
+    def __reduce__(self):                      # picklable (raised in a worker process, re-raised here)
+        return type(self), (str(self), self.pair, self.t_max)
 
 
 def pair_name(i: int, j: int) -> str:
@@ -373,7 +381,7 @@ def compute_irf(omega, A, B, A_inf=None, settings: IRFSettings | None = None) ->
                         "a catamaran's trapped waves: a longer memory)")
             raise IRFNotDecayed(f"K[{pair_name(i, i)}] has not decayed by T_K = {t[-1]:g} s "
                            f"(max|K| over the last 10 % is {100 * truncation[i, i]:.0f} % of its peak): "
-                           f"increase t_max (try {2 * t[-1]:g} s){hint}")
+                           f"increase t_max (try {2 * t[-1]:g} s){hint}", pair_name(i, i), float(t[-1]))
 
     # Ogilvie: A∞(ω) = A(ω) + (1/ω) ∫ K sin ωt dt, over the BEM band (uncleaned A)
     SK = sin_transform(t, K, omega)

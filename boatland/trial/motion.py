@@ -210,7 +210,8 @@ def compile_motion(db: HydroDB, memory: RadiationMemory, dt: float, *, method: s
     memory : RadiationMemory
         IRFs (and the state-space fit for ``method="state_space"``).
     dt : float
-        Integration step [s]; K is resampled every Δt/2 for the stage-consistent convolution.
+        Integration step [s]; K is resampled every Δt/2 for the stage-consistent convolution, the state
+        space discretised exactly over Δt/2 and Δt (:func:`hold_discretisation`).
     method : {"convolution", "state_space"}
     memory_length : float, optional
         T_K [s] of the convolution; default the IRF's own length.
@@ -245,12 +246,14 @@ def compile_motion(db: HydroDB, memory: RadiationMemory, dt: float, *, method: s
             Phi, g0, g1 = hold_discretisation(a_, b_, dt)
             G[p, 1] += (c_ @ g0_h, c_ @ g1_h)
             G[p, 2] += (c_ @ g0, c_ @ g1)
-            for r, s_ in enumerate(q):
-                other = Phi[r, 1 - r] if len(q) == 2 else 0.0
-                E.append((Phi[r, r], other, g0[r], g1[r]))
-                P.append((c_[r], (c_ @ Phi_h)[r], (c_ @ Phi)[r]))
+            c_h, c_1 = c_ @ Phi_h, c_ @ Phi              # output coefficients at c = ½ and 1
+            first = len(E)
+            for r in range(len(q)):
+                pair_ = len(q) == 2                      # a complex pair: the states first and first + 1
+                E.append((Phi[r, r], Phi[r, 1 - r] if pair_ else 0.0, g0[r], g1[r]))
+                P.append((c_[r], c_h[r], c_1[r]))
                 s_in.append(j); s_out.append(i)
-                partner.append(len(E) + (1 if r == 0 else -1) - 1 if len(q) == 2 else -1)
+                partner.append(first + 1 - r if pair_ else -1)
     n = len(E)
     ss_E, ss_P, ss_seg, rows = modal_layout(np.array(E).reshape(n, 4), np.array(P).reshape(n, 3),
                                            np.array(s_in, dtype=np.int64), np.array(s_out, dtype=np.int64),

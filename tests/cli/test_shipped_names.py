@@ -7,7 +7,8 @@ from pathlib import Path
 import pytest
 
 from boatland.cli import main
-from boatland.cli.common import shipped_names, shipped_or_path
+from boatland.cli.common import shipped_or_path
+from boatland.resources import shipped_names
 
 SCENARIOS = Path(__file__).resolve().parents[2] / "scenarios"
 
