@@ -57,13 +57,15 @@ def brute_force_time(camp: Path, hs: float, n: int = 40) -> float:
     """Wall seconds per plain time-domain trial on all cores (the brute force's unit cost)."""
     from boatland.campaign.isee import SampleSpec, execute_sample
     from boatland.campaign.executor import Executor
+    from boatland.campaign.plan import load_campaign
     from boatland.checks.files import load, resolve_database
 
     loaders = (load, resolve_database)
+    camp = load_campaign(camp, load_scenario=load)
     with Executor("local", os.cpu_count()) as pool:
-        list(pool.map(execute_sample, [(str(camp), SampleSpec(k, 0, 0, hs, k), loaders, True) for k in range(4)]))
+        list(pool.map(execute_sample, [(camp, SampleSpec(k, 0, 0, hs, k), loaders, True) for k in range(4)]))
         t0 = time.perf_counter()
-        rows = list(pool.map(execute_sample, [(str(camp), SampleSpec(k, 0, 0, hs, k), loaders, True)
+        rows = list(pool.map(execute_sample, [(camp, SampleSpec(k, 0, 0, hs, k), loaders, True)
                                               for k in range(4, 4 + n)]))
         wall = (time.perf_counter() - t0) / n
     assert all(r["status"] == 0 for r in rows)

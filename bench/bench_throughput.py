@@ -111,13 +111,12 @@ def per_trial(path: Path, rounds: int):
     check_cases(campaign, loaders[1])
     shared = prepare_cases(campaign, loaders[1])
     db = loaders[1](campaign.base)
-    source = str(path.resolve())
     specs = [campaign.trials()[c * campaign.seeds] for c in range(len(campaign.cases))]
     runs = []
     for spec in specs:
         sc = campaign.scenario_for(spec)
         kernel, n = kernel_inputs(sc, db, shared[spec.case].arrays)
-        trial = lambda spec=spec: execute_trial(source, spec, loaders, None, shared[spec.case])  # noqa: E731
+        trial = lambda spec=spec: execute_trial(campaign, spec, loaders, None, shared[spec.case])  # noqa: E731
         kernel(), trial()                                    # warm: compiled, cached, tables in place
         runs.append([kernel, trial, n, [np.inf, np.inf], [np.inf, np.inf]])
     for _ in range(rounds):
@@ -128,7 +127,7 @@ def per_trial(path: Path, rounds: int):
     steps = sum(r[2] for r in runs)
     wall = [sum(r[3][i] for r in runs) for i in (0, 1)]
     cpu = [sum(r[4][i] for r in runs) for i in (0, 1)]
-    return steps, wall, cpu, (source, specs[-1], loaders, shared[specs[-1].case]), [(r[0], r[2]) for r in runs]
+    return steps, wall, cpu, (campaign, specs[-1], loaders, shared[specs[-1].case]), [(r[0], r[2]) for r in runs]
 
 
 def kernel_rate(kernels) -> float:
@@ -154,13 +153,13 @@ def kernel_pair_rate(kernels) -> float:
     return 0.5 * (own + other)
 
 
-def profile_trial(source, spec, loaders, shared):
+def profile_trial(campaign, spec, loaders, shared):
     """Share of one execute_trial's time per stage (cProfile, cumulative)."""
     from boatland.campaign.runner import execute_trial
 
     prof = cProfile.Profile()
     prof.enable()
-    execute_trial(source, spec, loaders, None, shared)
+    execute_trial(campaign, spec, loaders, None, shared)
     prof.disable()
     stats = pstats.Stats(prof).stats
     total = max(v[3] for (f, _, name), v in stats.items() if name == "execute_trial")

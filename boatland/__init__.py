@@ -7,10 +7,12 @@ In a notebook::
     r = boatland.simulate("ctv_landing", **{"sea.Hs": 1.0, "simulation.duration": 300})
     print(r.verdict().text())            # HELD … / SLIPPED at t = … s, slid … m — the inputs
     ds = r.to_xarray()                   # time × dof / contact, units, inputs as attributes
-    store = boatland.open_store("demo.h5", grid=True)    # a campaign: P over Hs × heading
+    ds = boatland.campaign("demo", seeds=2)              # a campaign, run (or resumed) into demo.h5
+    store = boatland.open_store("demo.h5", grid=True)    # its store: P over Hs × heading
 
 Exported (imported on first use, so ``import boatland`` stays light): :func:`simulate`,
-:func:`load_scenario` (:mod:`boatland.api`), :func:`open_store` (:mod:`boatland.campaign.dataset`),
+:func:`load_scenario` (:mod:`boatland.api`), :func:`campaign` (:mod:`boatland.campaign.job`; the package
+:mod:`boatland.campaign` is callable as it), :func:`open_store` (:mod:`boatland.campaign.dataset`),
 :class:`Result` (:mod:`boatland.trial.result`), :func:`load_builtin` (the built-in vessel databases).
 
 Rooms, in layers (each imports only from those below it; checked by import-linter in CI and by
@@ -36,11 +38,12 @@ warning, for one release.
 
 __version__ = "0.1.0"
 
-__all__ = ["simulate", "load_scenario", "open_store", "Result", "load_builtin", "__version__"]
+__all__ = ["simulate", "load_scenario", "campaign", "open_store", "Result", "load_builtin", "__version__"]
 
 _EXPORTS = {
     "simulate": ("boatland.api", "simulate"),
     "load_scenario": ("boatland.api", "load_scenario"),
+    "campaign": ("boatland.campaign", None),     # the package, callable: boatland.campaign("demo", seeds=2)
     "open_store": ("boatland.campaign.dataset", "open_store"),
     "Result": ("boatland.trial.result", "Result"),
     "load_builtin": ("boatland.hydro.builtin", "load_builtin"),
@@ -52,7 +55,7 @@ def __getattr__(name: str):
         import importlib
 
         module, attr = _EXPORTS[name]
-        value = getattr(importlib.import_module(module), attr)
+        value = importlib.import_module(module) if attr is None else getattr(importlib.import_module(module), attr)
         globals()[name] = value
         return value
     raise AttributeError(f"module 'boatland' has no attribute {name!r}")

@@ -17,7 +17,10 @@ import warnings
 from pathlib import Path
 from typing import Any, Mapping
 
-__all__ = ["load_scenario", "simulate", "scenario_path"]
+from boatland.campaign.job import campaign, campaign_path
+from boatland.tomlspec import key_changes
+
+__all__ = ["load_scenario", "simulate", "scenario_path", "campaign", "campaign_path"]
 
 
 def scenario_path(name: str | Path | None = None) -> Path:
@@ -36,16 +39,6 @@ def scenario_path(name: str | Path | None = None) -> Path:
     if found is not None:
         return found
     raise BoatlandInputError(f"{name}: no such file, and not a shipped scenario ({', '.join(shipped_names())})")
-
-
-def _changes(changes: Mapping[str, Any] | None, overrides: dict) -> dict:
-    out = dict(changes or {})
-    for key, value in overrides.items():
-        path = key.replace("__", ".")
-        if path in out:
-            raise TypeError(f"{path!r} is given twice (in changes and as a keyword)")
-        out[path] = value
-    return out
 
 
 def load_scenario(scenario=None, *, changes: Mapping[str, Any] | None = None, **overrides):
@@ -70,7 +63,7 @@ def load_scenario(scenario=None, *, changes: Mapping[str, Any] | None = None, **
     from boatland.checks.files import load
 
     sc = scenario if isinstance(scenario, Scenario) else load(scenario_path(scenario))
-    todo = _changes(changes, overrides)
+    todo = key_changes(changes, overrides)
     return sc.replace(todo) if todo else sc
 
 
@@ -125,3 +118,4 @@ def simulate(scenario=None, *, changes: Mapping[str, Any] | None = None, log: st
     finally:
         for s in sinks:
             s.close()
+

@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import dataclasses
 import difflib
+import json
 import math
 import re
 import tomllib
@@ -38,7 +39,7 @@ from typing import Any, Callable, Mapping
 from boatland.errors import BoatlandInputError
 
 __all__ = ["Key", "Problems", "SpecError", "Table", "TableList", "Vector", "did_you_mean", "json_schema", "parse_toml",
-           "parse_toml_file", "validate"]
+           "parse_toml_file", "read_toml_text", "dump_toml", "key_changes", "validate"]
 
 _MISSING = object()
 
@@ -521,13 +522,69 @@ def parse_toml(text: str, source: str | Path = "<string>") -> dict[str, Any]:
         raise SpecError(str(source), [("", text_msg)]) from None
 
 
-def parse_toml_file(path: str | Path) -> dict[str, Any]:
-    """Read and parse a TOML file (missing or unreadable files raise :class:`SpecError`)."""
+def read_toml_text(path: str | Path) -> str:
+    """The text of a TOML file (missing or unreadable files raise :class:`SpecError`)."""
     path = Path(path)
     try:
-        text = path.read_text(encoding="utf-8")
+        return path.read_text(encoding="utf-8")
     except FileNotFoundError:
         raise SpecError(str(path), [("", "file not found")]) from None
     except (OSError, UnicodeDecodeError) as exc:
         raise SpecError(str(path), [("", f"cannot be read ({exc.__class__.__name__}: {exc})")]) from None
-    return parse_toml(text, path)
+
+
+def parse_toml_file(path: str | Path) -> dict[str, Any]:
+    """Read and parse a TOML file (missing or unreadable files raise :class:`SpecError`)."""
+    return parse_toml(read_toml_text(path), path)
+
+
+_BARE_KEY = re.compile(r"[A-Za-z0-9_-]+")
+
+
+def _toml_key(key: str) -> str:
+    return key if _BARE_KEY.fullmatch(key) else json.dumps(key, ensure_ascii=False)
+
+
+def _toml_value(v: Any) -> str:
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, int):
+        return str(v)
+    if isinstance(v, float):
+        return "nan" if math.isnan(v) else ("inf" if v > 0 else "-inf") if math.isinf(v) else repr(v)
+    if isinstance(v, str):
+        return json.dumps(v, ensure_ascii=False)      # a JSON string is a TOML basic string
+    if isinstance(v, (list, tuple)):
+        return "[" + ", ".join(_toml_value(x) for x in v) + "]"
+    if isinstance(v, dict):
+        return "{" + ", ".join(f"{_toml_key(k)} = {_toml_value(x)}" for k, x in v.items()) + "}"
+    raise TypeError(f"{type(v).__name__} has no TOML form")
+
+
+def dump_toml(doc: dict[str, Any]) -> str:
+    """A parsed TOML document (:func:`parse_toml`) as TOML text: top-level values, then one ``[table]`` per
+    top-level table (deeper tables inline). ``parse_toml(dump_toml(d)) == d`` for every ``d`` of strings,
+    numbers, booleans, lists and tables (dates are not written)."""
+    lines = [f"{_toml_key(k)} = {_toml_value(v)}" for k, v in doc.items() if not isinstance(v, dict)]
+    for k, table in doc.items():
+        if isinstance(table, dict):
+            lines += ["", f"[{_toml_key(k)}]"] + [f"{_toml_key(kk)} = {_toml_value(v)}" for kk, v in table.items()]
+    return "\n".join(lines) + "\n"
+
+
+def key_changes(changes: Mapping[str, Any] | None, overrides: Mapping[str, Any]) -> dict[str, Any]:
+    """Key path → value from a ``changes`` mapping and keyword ``overrides`` (dots written as double
+    underscores: ``sea__Hs=1.0`` is ``"sea.Hs"``), as the notebook API takes them.
+
+    Raises
+    ------
+    TypeError
+        A key path given both ways.
+    """
+    out = dict(changes or {})
+    for key, value in overrides.items():
+        path = key.replace("__", ".")
+        if path in out:
+            raise TypeError(f"{path!r} is given twice (in changes and as a keyword)")
+        out[path] = value
+    return out

@@ -10,9 +10,9 @@ campaign and the vessel it is made from, the commands), in a temporary folder, t
 Every matplotlib figure carries its title in the PNG's ``Title`` text chunk
 (:func:`boatland.plotstyle.save_figure`); ``tests/test_docs_figures.py`` checks that each title names the
 scenario (or campaign) and the vessel listed here. The Rerun screenshot has no title: its caption in the
-README names them, and the test checks that instead (the viewer needs a GPU or a GL stack that draws to
-R32Float textures; this project's CPU-only CI VM has neither, so there the screenshot is left as it is and
-the script says so). ``rao_ctv27_vs_ctv24.png`` has a script of its own
+README names them, and the test checks that instead. It is the viewer as ``boatland replay --connect`` leaves
+it (the time cursor on the first slip), rendered on a virtual display (``xvfb-run``; on a machine without a
+GPU, Mesa's software Vulkan driver — Debian's ``mesa-vulkan-drivers`` — with ``WGPU_BACKEND=vulkan``). ``rao_ctv27_vs_ctv24.png`` has a script of its own
 (``docs/rao_ctv27_vs_ctv24.py``), run from here too.
 """
 
@@ -35,7 +35,8 @@ ROOT = DOCS.parent
 class Figure:
     """One figure of ``docs/``: ``file``; ``source`` the shipped scenario or campaign its title names and
     ``vessel`` the built-in database; ``commands`` what makes it, each an argv of ``boatland`` (or, first
-    word ``python``/``rerun``, of that program) with ``{tmp}`` (a scratch folder) and ``{out}`` (the file)."""
+    word ``python``, of Python; ``viewer LOG OUT``: :func:`screenshot`) with ``{tmp}`` (a scratch folder) and
+    ``{out}`` (the file)."""
 
     file: str
     source: str
@@ -64,8 +65,7 @@ FIGURES = (
            (("campaign", "isee_limits", "-o", "{tmp}/isee.h5", "--report", "{tmp}/report"),),
            "{tmp}/report/limiting_hs_polar.png"),
     Figure("rerun_scene.png", "ctv_landing", "ctv27",
-           (("run", "ctv_landing", "--no-log", "--rerun", "save={tmp}/run.rrd"),
-            ("rerun", "{tmp}/run.rrd", "--screenshot-to", "{out}")), titled=False),
+           (("run", "ctv_landing", "--log", "{tmp}/run.mcap"), ("viewer", "{tmp}/run.mcap", "{out}")), titled=False),
     Figure("rao_ctv27_vs_ctv24.png", "ctv_landing, ctv24_landing", "ctv27, ctv24",
            (("python", "docs/rao_ctv27_vs_ctv24.py"),), "docs/rao_ctv27_vs_ctv24.png"),
 )
@@ -75,10 +75,41 @@ def _argv(cmd: tuple[str, ...], tmp: Path, out: Path) -> list[str]:
     words = [w.format(tmp=tmp, out=out) for w in cmd]
     if words[0] == "python":
         return [sys.executable, *words[1:]]
-    if words[0] == "rerun":            # the viewer renders into a virtual display; its gRPC server on loopback only
-        return ["xvfb-run", "-a", shutil.which("rerun") or "rerun", "--bind", "127.0.0.1", "--window-size", "1600x900",
-                *words[1:]]
     return [sys.executable, "-m", "boatland", *words]
+
+
+def screenshot(log: str, out: str, env: dict, size: str = "1600x900") -> None:
+    """A Rerun viewer on a virtual display (its server on loopback, a free port) shows the replay of ``log`` as
+    ``boatland replay --connect`` leaves it; its screenshot goes to ``out``. The display is larger than the
+    window, so that the virtual pointer (at the display's centre) hovers over nothing."""
+    import socket
+
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    url = f"rerun+http://127.0.0.1:{port}/proxy"
+    env = dict(env, WGPU_BACKEND=env.get("WGPU_BACKEND", "vulkan"))
+    viewer = subprocess.Popen(["xvfb-run", "-a", "-s", "-screen 0 3840x2160x24", shutil.which("rerun") or "rerun",
+                               "--bind", "127.0.0.1", "--port", str(port), "--window-size", size],
+                              env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
+    try:
+        deadline = time.monotonic() + 60
+        while True:
+            try:
+                socket.create_connection(("127.0.0.1", port), timeout=0.5).close()
+                break
+            except OSError:
+                if viewer.poll() is not None or time.monotonic() > deadline:
+                    raise OSError("the Rerun viewer did not start")
+                time.sleep(0.2)
+        subprocess.run([sys.executable, "-m", "boatland", "replay", log, "--connect", url], cwd=ROOT, env=env,
+                       check=True, stdout=subprocess.DEVNULL)
+        code = (f"from rerun.experimental import ViewerClient; import time; time.sleep(3); "
+                f"ViewerClient.connect({url!r}).save_screenshot({out!r})")
+        subprocess.run([sys.executable, "-c", code], env=env, check=True)
+    finally:
+        os.killpg(viewer.pid, 15)
+        viewer.wait(10)
 
 
 def make(fig: Figure) -> float:
@@ -89,7 +120,10 @@ def make(fig: Figure) -> float:
         tmp = Path(tmp)
         out = tmp / fig.file
         for cmd in fig.commands:
-            subprocess.run(_argv(cmd, tmp, out), cwd=ROOT, env=env, check=True, stdout=subprocess.DEVNULL)
+            if cmd[0] == "viewer":
+                screenshot(*(w.format(tmp=tmp, out=out) for w in cmd[1:]), env)
+            else:
+                subprocess.run(_argv(cmd, tmp, out), cwd=ROOT, env=env, check=True, stdout=subprocess.DEVNULL)
         made = Path(fig.produced.format(tmp=tmp, out=out))
         made = made if made.is_absolute() else ROOT / made
         if made != DOCS / fig.file:

@@ -45,3 +45,44 @@ def test_simulate_returns_a_result_with_verdict_and_dataset(tmp_path):
     ds = r.to_xarray()
     assert ds.attrs["input_Hs_m"] == 0.1 and ds.sizes["time"] == len(r.t)
     assert (tmp_path / "r.mcap").stat().st_size > 1000
+
+
+@pytest.mark.slow
+def test_campaign_returns_what_the_command_stores(tmp_path):
+    """``boatland.campaign('demo', seeds=2)`` (as the issue's one-liner, in a fresh process and folder) returns the
+    Dataset of the store ``boatland campaign demo --set seeds=2`` writes: equal in everything but wall times."""
+    xr = pytest.importorskip("xarray")
+    api, cli = tmp_path / "api", tmp_path / "cli"
+    api.mkdir(), cli.mkdir()
+    code = ("import boatland; ds = boatland.campaign('demo', seeds=2, progress=False); "
+            "ds.drop_vars('wall_time').to_netcdf('ds.nc')")
+    subprocess.run([sys.executable, "-c", code], cwd=api, check=True, capture_output=True, text=True)
+    assert (api / "demo.h5").is_file()                              # the command's default store, in the cwd
+    subprocess.run([sys.executable, "-m", "boatland", "campaign", "demo", "--set", "seeds=2"], cwd=cli, check=True,
+                   capture_output=True, text=True)
+    stored = boatland.open_store(cli / "demo.h5").drop_vars("wall_time")
+    with xr.open_dataset(api / "ds.nc") as returned:
+        xr.testing.assert_identical(returned.load(), stored)
+    assert stored.sizes["trial"] == 16 and stored.attrs["seeds_per_case"] == 2
+    assert stored.attrs["campaign_file"].startswith(f"# {boatland.api.campaign_path('demo')}, changed: seeds = 2\n")
+
+
+@pytest.mark.slow
+def test_campaign_resumes_its_store_and_refuses_another_campaigns(tmp_path):
+    doc = {"name": "tiny", "scenario": "ctv_landing", "seeds": 1, "access": 5.0,
+           "set": {"radiation.method": "state_space"}, "axes": {"sea.Hs": [0.3, 0.6]}}
+    seen = []
+    ds = boatland.campaign(doc, store=tmp_path / "t.h5", progress=lambda done, total: seen.append((done, total)))
+    assert seen[0] == (0, 2) and seen[-1] == (2, 2) and list(ds.Hs.values) == [0.3, 0.6]
+    seen.clear()
+    again = boatland.campaign(doc, store=tmp_path / "t.h5", progress=lambda d, t: seen.append((d, t)))
+    assert seen == [(2, 2)] and again.drop_vars("wall_time").identical(ds.drop_vars("wall_time"))
+    with pytest.raises(BoatlandInputError, match="holds results of a different campaign"):
+        boatland.campaign(doc, store=tmp_path / "t.h5", changes={"set.thrust.force": 100e3}, progress=False)
+    with pytest.raises(BoatlandInputError, match="an output never replaces an input"):
+        boatland.campaign(doc, store=boatland.api.scenario_path("ctv_landing"), progress=False)
+    with pytest.raises(SpecError, match="seeds: must be ≥ 1"):
+        boatland.campaign(doc, seeds=0)
+    with pytest.raises(BoatlandInputError, match="not a shipped campaign"):
+        boatland.campaign("no_such_campaign")
+    assert not list(tmp_path.glob("*.h5.*")) and sorted(p.name for p in tmp_path.iterdir()) == ["t.h5"]

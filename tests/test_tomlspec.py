@@ -97,3 +97,18 @@ def test_syntax_error_names_line_and_column():
 def test_missing_file(tmp_path):
     with pytest.raises(SpecError, match="file not found"):
         parse_toml_file(tmp_path / "nope.toml")
+
+
+def test_dump_toml_round_trips_every_shipped_file():
+    import tomllib
+
+    from boatland.resources import shipped_file, shipped_names
+    from boatland.tomlspec import dump_toml
+
+    files = [shipped_file(n) for n in shipped_names()] + [shipped_file(n, "campaign") for n in shipped_names("campaign")]
+    assert len(files) > 10
+    for f in files:
+        doc = tomllib.loads(f.read_text(encoding="utf-8"))
+        assert tomllib.loads(dump_toml(doc)) == doc, f
+    odd = {"a b": 1, "x": float("inf"), "t": {"sea.Hs": [0.5, 1.0], "q": 'say "hi"\n', "n": {"deep": True}}}
+    assert tomllib.loads(dump_toml(odd)) == odd

@@ -56,6 +56,11 @@ def open_store(path: str | Path, *, grid: bool = False):
         ``P_hi``, ``mean_time``, ``mean_time_lo``, ``mean_time_hi``); the campaign's plan, fixed inputs
         and file as attributes.
 
+        An ISEE store (``method = "isee"``): ``trial`` is one row per sample (with its ``isee_*`` and
+        ``lin_*`` columns), ``run`` one row per run (a case at one Hs: ``case``, ``level``, ``hs``, ``samples``
+        and every estimate of ``/stats`` under its own name, e.g. ``"first slip: P"``), and with an accepted
+        risk ``case`` one row per case of ``/isee_limits`` (``"limiting Hs"`` and its interval).
+
     Raises
     ------
     BoatlandInputError
@@ -81,6 +86,8 @@ def open_store(path: str | Path, *, grid: bool = False):
     tti = np.stack([trials[INCIDENT_PREFIX + n] for n in names], axis=1) if len(trials) else np.zeros((0, len(names)))
     tv["time_to_incident"] = (("trial", "incident"), tti,
                               {"units": "s", "long_name": "time from the waves' full height to the incident (NaN: none)"})
+    if header.get("method") == "isee":
+        return _isee_dataset(xr, data, tv, names)
     cv = {"label": ("case", _text(stats["label"]), {"long_name": "case: its axis values"}),
           "trials": ("case", stats["trials"], {"units": "1", "long_name": "trials run"}),
           "failed": ("case", stats["failed"], {"units": "1", "long_name": "failed trials (left out)"}),
@@ -111,3 +118,32 @@ def open_store(path: str | Path, *, grid: bool = False):
         ds = ds.set_index(case=axis_names).unstack("case") if len(axis_names) > 1 else \
             ds.swap_dims(case=axis_names[0]).drop_vars("case")
     return ds
+
+
+def _table_vars(table: np.ndarray, dim: str) -> dict:
+    """Every column of a structured array as a variable over ``dim`` (text decoded), named as in the store."""
+    return {name: (dim, _text(table[name]) if table[name].dtype.kind == "S" else table[name])
+            for name in table.dtype.names}
+
+
+def _isee_dataset(xr, data: dict, tv: dict, names: list[str]):
+    """The Dataset of an ISEE store: samples (``trial``), runs (``run``), limits (``case``)."""
+    trials, header = data["trials"], data["header"]
+    runs = _table_vars(data["stats"], "run")
+    coords = {"trial": ("trial", trials["trial"], {"long_name": "sample number (case, level, sample)"}),
+              "run": ("run", np.arange(len(data["stats"])), {"long_name": "run: one case at one Hs"}),
+              "incident": ("incident", np.array(names, dtype=object), {"long_name": "incident definition"})}
+    limits = data.get("isee_limits")
+    if limits is not None:
+        coords["case"] = ("case", limits["case"], {"long_name": "case number"})
+    taken = set(tv) | set(coords)
+    variables = {**tv, **{f"run {k}" if k in taken else k: v for k, v in runs.items()}}
+    if limits is not None:
+        taken |= set(variables)
+        variables.update({f"limit {k}" if k in taken else k: v
+                          for k, v in _table_vars(limits, "case").items() if k != "case"})
+    attrs = {"campaign": str(header.get("campaign", "")), "method": "isee", "isee": header.get("isee", ""),
+             "plan": header.get("plan", ""), "inputs": json.dumps(inputs_from_header(header)),
+             "campaign_file": header.get("campaign_file", ""),
+             "boatland_version": str(header.get("boatland_version", ""))}
+    return xr.Dataset(variables, coords=coords, attrs=attrs)

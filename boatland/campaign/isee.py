@@ -67,7 +67,7 @@ from scipy.special import ndtri
 
 from boatland.campaign.labels import campaign_inputs
 from boatland.campaign.plan import Campaign
-from boatland.campaign.executor import Executor, check_scheduler_address
+from boatland.campaign.executor import Executor, Shared, check_scheduler_address
 from boatland.campaign.plan import plan_json
 from boatland.campaign.prepare import case_sensitivity, check_cases, database_for, memory_key, worker_context
 from boatland.campaign.runner import completed, incident_names, summary_row
@@ -251,8 +251,8 @@ def _events_text(result, t_access: float) -> str:
     return "; ".join(f"{e.t - t_access:.2f} {e.kind} c{e.contact}" for e in ev[:6])[:200]
 
 
-def execute_sample(source: str, spec: SampleSpec, loaders, plain: bool = False) -> dict:
-    """One ISEE sample of the campaign file ``source``: draw u, the linear indicators, the time-domain
+def execute_sample(campaign: Campaign, spec: SampleSpec, loaders, plain: bool = False) -> dict:
+    """One ISEE sample of ``campaign``: draw u, the linear indicators, the time-domain
     trial on exactly that sea; its store row (status −1 and the error if it failed; never raises).
 
     ``plain``: a plain Monte Carlo sample of the same Gaussian sea instead, u ~ N(0, I) (the brute force
@@ -267,8 +267,7 @@ def execute_sample(source: str, spec: SampleSpec, loaders, plain: bool = False) 
     ss = sample_seed(0, 0, 0, 0)
     with single_threaded():
         try:
-            ctx = worker_context(source, loaders)
-            campaign: Campaign = ctx["campaign"]
+            ctx = worker_context(campaign, loaders)
             names = incident_names(campaign)
             ss = sample_seed(campaign.master_seed, spec.case, spec.level, spec.sample, plain)
             model = _models(ctx, campaign, spec.case, spec.hs, loaders)
@@ -523,7 +522,7 @@ def run_isee(campaign: Campaign, store_path: str | Path, *, loaders, executor: s
                                  "the limiting Hs along")
     header = {
         "campaign": campaign.name, "campaign_digest": campaign.digest(),
-        "campaign_file": Path(campaign.source).read_text(encoding="utf-8"),
+        "campaign_file": campaign.text,
         "plan": plan_json(campaign), "n_trials": len(campaign.cases) * MAX_LEVELS * MAX_SAMPLES,
         "incidents": "\n".join(names), "method": "isee", "isee": json.dumps(asdict(s)),
         "inputs": json.dumps(campaign_inputs(campaign), default=float),   # for the report's inputs and titles
@@ -532,11 +531,9 @@ def run_isee(campaign: Campaign, store_path: str | Path, *, loaders, executor: s
         check_scheduler_address(scheduler)
     check_cases(campaign, loaders[1])
     store = CampaignStore.open(store_path, header, names, ISEE_FIELDS)
-    source = str(Path(campaign.source).resolve())
     try:
         with single_threaded():      # prepared here before the workers fork: they inherit it
-            ctx = worker_context(source, loaders)
-            ctx["campaign"] = campaign
+            ctx = worker_context(campaign, loaders)
             refs = {c.index: _models(ctx, campaign, c.index, _case_hs(campaign, c.index) or 0.0, loaders)
                     for c in campaign.cases}
         curves = {c: _rice_curve(m.margins, _case_hs(campaign, c)) for c, m in refs.items()
@@ -577,7 +574,7 @@ def run_isee(campaign: Campaign, store_path: str | Path, *, loaders, executor: s
                 if not tasks:
                     break
                 total = len(store.rows) + len(tasks)
-                for row in pool.map(execute_sample, [(source, t, loaders) for t in tasks]):
+                for row in pool.map(execute_sample, [(Shared("campaign", campaign), t, loaders) for t in tasks]):
                     store.add(row)
                     if progress:
                         progress(len(store.rows), total)

@@ -39,6 +39,7 @@ order, the worker count and the executor that runs the trials.
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import itertools
 import json
@@ -54,10 +55,10 @@ from boatland.errors import BoatlandInputError, BoatlandWarning
 from boatland.vessel.imported import database_files
 from boatland.scenario.scenario import Scenario
 from boatland.scenario.schema import SCENARIO_SCHEMA
-from boatland.tomlspec import Key, Problems, SpecError, Table, Vector, parse_toml_file, validate
+from boatland.tomlspec import Key, Problems, SpecError, Table, Vector, dump_toml, parse_toml, read_toml_text, validate
 from boatland.trial.simulate import exposure_start
 
-__all__ = ["Campaign", "Case", "IseeSettings", "TrialSpec", "load_campaign", "plan_json", "trial_seed", "file_sha256",
+__all__ = ["Campaign", "Case", "IseeSettings", "TrialSpec", "load_campaign", "change_campaign", "plan_json", "trial_seed", "file_sha256",
            "CAMPAIGN_SCHEMA", "METHODS"]
 
 #: How a campaign estimates its probabilities: N wave seeds per case, or importance sampling of the
@@ -180,7 +181,11 @@ class Campaign:
     seeds, master_seed : int
     keep_series : tuple of int
     document : dict
-        The campaign file as parsed (its digest identifies the campaign in a store).
+        The campaign as parsed, with its changes applied (its digest identifies the campaign in a store).
+    text : str
+        The campaign as read: the file's text, or — changed (``boatland campaign --set``,
+        :func:`boatland.api.campaign`) or given as a dict — the document that runs as TOML, headed by what
+        it came from (a store records it).
     access : float or None
         The exposure of every trial to the full sea [s] (``duration``); None: the base scenario's
         duration is the whole run.
@@ -199,6 +204,7 @@ class Campaign:
     master_seed: int
     keep_series: tuple
     document: dict
+    text: str = ""
     access: float | None = None
     _exposure: dict = field(default_factory=dict, repr=False)   # case → exposure_start (scenario_for)
     method: str = "monte-carlo"
@@ -239,10 +245,23 @@ class Campaign:
             changes["simulation.duration"] = self._exposure[spec.case] + self.access
         return self.base.replace(changes)
 
+    @property
+    def from_file(self) -> bool:
+        """Read from a campaign file (``source`` is its path), not given as a dict."""
+        return not self.source.startswith("<")
+
+    @functools.cached_property
+    def identity(self) -> str:
+        """SHA-256 of the plan that runs (the document, the base scenario, the method) — without the files
+        it reads (:meth:`digest` adds them): a worker's key for the campaign it holds."""
+        text = json.dumps(self.document, sort_keys=True, default=str)
+        return hashlib.sha256(f"{text}\n{self.base.digest()}\n{self.method}".encode()).hexdigest()
+
     def input_files(self) -> list[Path]:
-        """Every file the campaign reads: the campaign file, the base scenario, and the database files and
-        measured-wave records of the base and of every case."""
-        files = [Path(self.source), Path(self.scenario_path)]
+        """Every file the campaign reads: the campaign file (when it came from one), the base scenario, and
+        the database files and measured-wave records of the base and of every case."""
+        files = [Path(self.source)] if self.from_file else []
+        files.append(Path(self.scenario_path))
         with warnings.catch_warnings():      # the cases' warnings are the checks' to tell
             warnings.simplefilter("ignore")
             scenarios = [self.base] + [self.base.replace(dict(c.values)) for c in self.cases if c.values]
@@ -262,20 +281,27 @@ class Campaign:
         contents (SHA-256) of every file they read (:meth:`input_files`: database, measured-wave record) —
         a resume never mixes results of changed inputs."""
         text = json.dumps(self.document, sort_keys=True, default=str)
-        files = "\n".join(f"{p.name} {file_sha256(p)}" for p in self.input_files()[2:])
+        files = "\n".join(f"{p.name} {file_sha256(p)}" for p in self.input_files()[1 + self.from_file:])
         method = "" if self.method == "monte-carlo" else f"\nmethod {self.method}"
         return hashlib.sha256(f"{text}\n{self.base.digest()}\n{files}{method}".encode()).hexdigest()
 
 
-def load_campaign(path: str | Path, *, load_scenario) -> Campaign:
-    """Read and validate a campaign file; every problem at once, with key paths.
+def load_campaign(source: str | Path | dict, *, load_scenario, changes: dict | None = None,
+                  changed_by: str = "") -> Campaign:
+    """Read and validate a campaign file (or document), with changes; every problem at once, with key paths.
 
     Parameters
     ----------
-    path : str or Path
+    source : str, Path or dict
+        A campaign file, or its document as a dict (its ``scenario`` relative to the working directory).
     load_scenario : callable
         ``load_scenario(path) -> Scenario`` for the base scenario (the edge passes its loader, which
         knows the built-in databases).
+    changes : dict, optional
+        Key path → value (:func:`change_campaign`: ``seeds``, ``access``, ``set.thrust.force``,
+        ``axes.sea.Hs``, ``isee.accept``; None removes the key), validated as the file is.
+    changed_by : str
+        How a refused change is named (``"--set "``: ``--set seeds=0: …``); default the key path.
 
     Raises
     ------
@@ -283,9 +309,70 @@ def load_campaign(path: str | Path, *, load_scenario) -> Campaign:
         Unknown keys (with a "did you mean"), wrong types, empty axes, an axis or ``[set]`` key that
         is not a scenario key or a value the scenario rejects — each named by its key path.
     """
-    path = Path(path)
-    problems = Problems(path)
-    doc = parse_toml_file(path)
+    if isinstance(source, dict):
+        doc = json.loads(json.dumps(source))         # a copy of plain values (a dict of dicts and lists)
+        path = Path.cwd() / "<dict>"
+        label = f"<campaign {doc.get('name', '')!s}>".replace(" >", ">")
+        text = None
+    else:
+        path = Path(source)
+        label = str(path)
+        text = read_toml_text(path)
+        doc = parse_toml(text, path)
+    if changes:
+        doc = change_campaign(doc, changes, label, changed_by)
+    if text is None or changes:
+        said = ", ".join(f"{k} = {v!r}" for k, v in (changes or {}).items())
+        text = (f"# {label}" + (f", changed: {said}" if said else "") + "\n" + dump_toml(doc))
+    try:
+        return _campaign(doc, path, label, text, load_scenario)
+    except SpecError as exc:
+        if not changes:
+            raise
+        raise SpecError(exc.source, [(_blamed(k, changes, changed_by), m) for k, m in exc.problems]) from None
+
+
+def change_campaign(doc: dict, changes: dict, source: str = "", changed_by: str = "") -> dict:
+    """The campaign document with key-path changes: a top-level key (``seeds``, ``access``, ``master_seed``,
+    ``method``, ``name``), a key of a table (``isee.accept``, ``store.keep_series``,
+    ``incidents.slip_distance``), or a scenario key path in ``[set]`` or ``[axes]`` (``set.thrust.force``,
+    ``axes.sea.Hs``: the rest of the path is the one key). ``None`` removes the key.
+
+    Raises
+    ------
+    SpecError
+        A path into a key that is not a table.
+    """
+    out = json.loads(json.dumps(doc))
+    for key, value in changes.items():
+        head, dot, rest = key.partition(".")
+        if head in ("set", "axes") and dot:
+            parts = [head, rest]
+        else:
+            parts = key.split(".")
+        table = out
+        for i, part in enumerate(parts[:-1]):
+            table = table.setdefault(part, {})
+            if not isinstance(table, dict):
+                raise SpecError(source, [(f"{changed_by}{key}", f"{'.'.join(parts[:i + 1])} is not a table")])
+        if value is None:
+            table.pop(parts[-1], None)
+        else:
+            table[parts[-1]] = value
+    return out
+
+
+def _blamed(key: str, changes: dict, changed_by: str) -> str:
+    """A problem's key path, named as the change that made it (``--set seeds``) where one did."""
+    for k in changes:
+        if key == k or key.startswith(k + ".") or k.startswith(key + ".") and key:
+            return f"{changed_by}{key}" if changed_by else key
+    return key
+
+
+def _campaign(doc: dict, path: Path, source: str, text: str, load_scenario) -> Campaign:
+    """The validated campaign of the document ``doc`` (its ``scenario`` relative to ``path``'s folder)."""
+    problems = Problems(source)
     raw_set, raw_axes = doc.get("set", {}), doc.get("axes", {})
     data = validate({k: v for k, v in doc.items() if k not in ("set", "axes")}, CAMPAIGN_SCHEMA, problems)
     for name, table in (("set", raw_set), ("axes", raw_axes)):
@@ -295,24 +382,26 @@ def load_campaign(path: str | Path, *, load_scenario) -> Campaign:
     if "access" in data and "duration" in data:
         problems.add("duration", "give access only (duration is its older name)")
     if "duration" in data and "access" not in data:
-        warnings.warn(f"{path}: duration = {data['duration']:g}: the access (the exposure after the settling and "
+        warnings.warn(f"{source}: duration = {data['duration']:g}: the access (the exposure after the settling and "
                       f"the wave ramp); write access = {data['duration']:g} — a scenario's simulation.duration is "
-                      "the whole trial", BoatlandWarning, stacklevel=2)
+                      "the whole trial", BoatlandWarning, stacklevel=3)
     if method == "monte-carlo" and "seeds" not in data and not problems.has("seeds"):
         problems.add("seeds", "missing: a monte-carlo campaign runs this many trials (wave seeds) per case")
     isee = _isee_settings(data.get("isee") or {}, problems)
     problems.raise_if_any()
     base_path = (path.parent / data["scenario"]).resolve()
     if not base_path.is_file():
-        raise SpecError(str(path), [("scenario", f"no such file: {base_path}")])
+        raise SpecError(source, [("scenario", f"no such file: {base_path}")])
     try:
         scenario = load_scenario(base_path)
     except SpecError as exc:
-        raise SpecError(str(path), [("scenario", f"the base scenario has problems:\n{exc}")]) from None
+        raise SpecError(source, [("scenario", f"the base scenario has problems:\n{exc}")]) from None
     changes: dict[str, Any] = dict(raw_set)
     for key, values in (data.get("incidents") or {}).items():
         changes[f"incidents.{key}"] = list(values)   # numbers or tables, as validated; the scenario checks them again
     base = _apply(scenario, changes, problems, "set")
+    if base is None:                  # the axes are checked on a valid base
+        problems.raise_if_any()
     axes: dict[str, list] = {}
     for key, values in raw_axes.items():
         if not isinstance(values, list) or not values:
@@ -330,11 +419,11 @@ def load_campaign(path: str | Path, *, load_scenario) -> Campaign:
     n_trials = int(np.prod([len(v) for v in axes.values()])) * int(data.get("seeds", 1))
     bad = [k for k in keep if k >= n_trials]
     if bad:
-        raise SpecError(str(path), [("store.keep_series", f"trial numbers {bad} do not exist (0 … {n_trials - 1})")])
+        raise SpecError(source, [("store.keep_series", f"trial numbers {bad} do not exist (0 … {n_trials - 1})")])
     access = data.get("access", data.get("duration"))      # "duration": its older name
-    return Campaign(name=data["name"], description=data.get("description", ""), source=str(path),
+    return Campaign(name=data["name"], description=data.get("description", ""), source=source,
                     scenario_path=base_path, base=base, axes=axes, seeds=int(data.get("seeds", 1)),
-                    master_seed=int(data.get("master_seed", 0)), keep_series=keep, document=doc,
+                    master_seed=int(data.get("master_seed", 0)), keep_series=keep, document=doc, text=text,
                     access=None if access is None else float(access), method=method, isee=isee)
 
 

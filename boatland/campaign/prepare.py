@@ -24,7 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from boatland.campaign.executor import kill_pool, process_pool
-from boatland.campaign.plan import Campaign, TrialSpec, load_campaign, trial_seed
+from boatland.campaign.plan import Campaign, TrialSpec, trial_seed
 from boatland.reproducible import single_threaded
 from boatland.sea.spectra import SHAPES
 from boatland.trial.motion import MotionArrays
@@ -62,14 +62,13 @@ class CaseData:
     tables: tuple = ()
 
 
-def worker_context(source: str, loaders) -> dict:
-    """What a worker process keeps between the tasks of one campaign file ``source``: the campaign and
-    the databases, radiation memories, kernel arrays and checked cases it has made (``{"campaign", "db",
-    "memory", "arrays", "checked"}``; one campaign at a time)."""
-    load_scenario, load_database = loaders
-    key = (source, loaders)
+def worker_context(campaign: Campaign, loaders) -> dict:
+    """What a worker process keeps between the tasks of one campaign: the campaign it was sent (never read
+    again from its files) and the databases, radiation memories, kernel arrays and checked cases it has
+    made (``{"campaign", "db", "memory", "arrays", "checked"}``; one campaign at a time, by
+    :attr:`~boatland.campaign.plan.Campaign.identity`)."""
+    key = (campaign.identity, loaders)
     if key not in _WORKER:
-        campaign = load_campaign(source, load_scenario=load_scenario)
         _WORKER.clear()
         _WORKER[key] = {"campaign": campaign, "db": {}, "memory": {}, "arrays": {}, "checked": set()}
     return _WORKER[key]

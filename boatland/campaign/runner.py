@@ -59,10 +59,10 @@ def incident_names(campaign: Campaign) -> list[str]:
     return [d.name for d in campaign_incidents(campaign.base.incidents, campaign.base.fender is not None)]
 
 
-def execute_trial(source: str, spec: TrialSpec, loaders, keep_dir: str | None = None,
+def execute_trial(campaign: Campaign, spec: TrialSpec, loaders, keep_dir: str | None = None,
                   shared: CaseData | None = None) -> dict:
-    """Run one trial of the campaign file ``source`` and return its summary row (never raises for a
-    failing trial: the row carries status −1 and the error).
+    """Run one trial of ``campaign`` and return its summary row (never raises for a failing trial: the row
+    carries status −1 and the error).
 
     ``shared``: its case's :class:`~boatland.campaign.prepare.CaseData` from
     :func:`boatland.campaign.prepare.prepare_cases` (the memory checked there). Without
@@ -79,8 +79,7 @@ def execute_trial(source: str, spec: TrialSpec, loaders, keep_dir: str | None = 
     pin = single_threaded()
     pin.__enter__()
     try:
-        ctx = worker_context(source, loaders)
-        campaign: Campaign = ctx["campaign"]
+        ctx = worker_context(campaign, loaders)
         names = incident_names(campaign)
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
@@ -192,7 +191,7 @@ def run_campaign(campaign: Campaign, store_path: str | Path, *, loaders, executo
         names = incident_names(campaign)
         header = {
             "campaign": campaign.name, "campaign_digest": campaign.digest(),
-            "campaign_file": Path(campaign.source).read_text(encoding="utf-8"),
+            "campaign_file": campaign.text,
             "plan": plan_json(campaign), "n_trials": campaign.n_trials, "incidents": "\n".join(names),
             "inputs": json.dumps(campaign_inputs(campaign), default=float),   # for the report's titles
         }
@@ -206,15 +205,15 @@ def run_campaign(campaign: Campaign, store_path: str | Path, *, loaders, executo
             if progress:
                 progress(total - len(todo), total)
             keep = str(store.series_dir) if campaign.keep_series else None
-            source = str(Path(campaign.source).resolve())
             if background is None and todo:
                 background = start_background(campaign, loaders, executor, workers)
             shared = CasePreparation(campaign, loaders[1], background)   # a case's data when its first trial is sent
             if todo and executor == "local":        # forked workers inherit the campaign and databases
-                worker_context(source, loaders)["db"].update(shared.checked["dbs"])
+                worker_context(campaign, loaders)["db"].update(shared.checked["dbs"])
             if todo:
                 with Executor(executor, workers, scheduler, connect_timeout) as ex:
-                    rows = ex.map(execute_trial, ((source, spec, loaders, keep, Shared(spec.case, shared.get(spec.case)))
+                    plan = Shared("campaign", campaign)     # to a Dask cluster once
+                    rows = ex.map(execute_trial, ((plan, spec, loaders, keep, Shared(spec.case, shared.get(spec.case)))
                                                   for spec in todo))
                     try:
                         for row in rows:

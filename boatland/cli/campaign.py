@@ -6,8 +6,9 @@ import os
 import sys
 from pathlib import Path
 
-from boatland.cli.common import shipped_or_path
-from boatland.cli.guard import Output, check_outputs, in_range, integer
+from boatland.cli.common import campaign_setting, shipped_or_path
+from boatland.cli.guard import in_range, integer
+from boatland.outputs import Output, check_outputs
 
 __all__ = ["add_parser", "cmd"]
 
@@ -22,6 +23,11 @@ def add_parser(sub) -> None:
     camp.add_argument("campaign", type=shipped_or_path("campaign"),
                       help="campaign file (TOML) or the name of a shipped one: demo, isee_rare, table414, … "
                            "(scenarios/campaigns/)")
+    camp.add_argument("--set", type=campaign_setting, action="append", default=[], metavar="KEY=VALUE",
+                      dest="settings",
+                      help="change the campaign as its file would, validated the same way (repeatable): --set seeds=2 "
+                           "--set access=600; the base scenario's keys under set. (--set set.thrust.force=100e3), an "
+                           "axis under axes. (--set axes.sea.Hs=[0.5,1.0]). The store records the changed campaign")
     camp.add_argument("-o", "--output", type=Path, help="store (HDF5; default: <campaign name>.h5 here)")
     camp.add_argument("--workers", type=integer(1, 4096), help="local worker processes (default: all cores)")
     camp.add_argument("--scheduler", metavar="URL", help="run on a Dask scheduler (tcp://host:port) instead")
@@ -63,7 +69,7 @@ def cmd(args) -> int:
 
     with warnings.catch_warnings(record=True) as caught:     # shown as one line each once the file is good
         warnings.simplefilter("always")
-        campaign = load_campaign(args.campaign, load_scenario=load)
+        campaign = load_campaign(args.campaign, load_scenario=load, changes=dict(args.settings), changed_by="--set ")
         if args.method:
             campaign = campaign.with_method(args.method)
     for w in dict.fromkeys(str(w.message) for w in caught):

@@ -55,7 +55,7 @@ def load_guarded(path, outputs, extra_inputs=(), changes=None, flags=None, deriv
     outputs against every file it reads (before anything heavy), then read its database and run every
     check (:func:`boatland.checks.files.check_loaded`). Warnings are returned, not printed.
 
-    ``outputs`` is a list of :class:`boatland.cli.guard.Output` or a callable ``outputs(scenario)``;
+    ``outputs`` is a list of :class:`boatland.outputs.Output` or a callable ``outputs(scenario)``;
     ``derived``, a callable ``derived(scenario) -> (changes, flags)``: changes that depend on the changed
     scenario (``run --access``: the duration from its settling and wave ramp), applied after ``changes``.
     Returns (scenario, db, warnings, setup): ``setup`` the :class:`boatland.landing.setup.Setup` the checks
@@ -63,7 +63,7 @@ def load_guarded(path, outputs, extra_inputs=(), changes=None, flags=None, deriv
     """
     import warnings
 
-    from boatland.cli.guard import check_outputs
+    from boatland.outputs import check_outputs
     from boatland.checks.files import check_loaded, default_scenario_path, load
 
     with warnings.catch_warnings(record=True) as caught:
@@ -137,23 +137,32 @@ def shipped_or_path(kind: str):
     return parse
 
 
-def parse_setting(text: str) -> tuple[str, object]:
-    """``KEY=VALUE`` of ``--set``: a key path as in the scenario's TOML (``sea.Hs``, ``fender.mu_s``) and a TOML
-    value (``0.6``, ``[0.1, 0.3]``, ``true``, ``"ctv24"``; a bare word is a string: ``convolution``)."""
+def parse_setting(text: str, *, campaign: bool = False) -> tuple[str, object]:
+    """``KEY=VALUE`` of ``--set``: a key path as in the scenario's TOML (``sea.Hs``, ``fender.mu_s``) — or, with
+    ``campaign``, as in the campaign's (``seeds``, ``set.thrust.force``, ``axes.sea.Hs``) — and a TOML value
+    (``0.6``, ``[0.1, 0.3]``, ``true``, ``"ctv24"``; a bare word is a string: ``convolution``)."""
     import argparse
     import re
     import tomllib
 
     key, eq, raw = text.partition("=")
     key, raw = key.strip(), raw.strip()
-    if not eq or not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*(\.[A-Za-z_][A-Za-z0-9_]*)+", key) or not raw:
-        raise argparse.ArgumentTypeError(f"{text!r}: expected KEY=VALUE with a key path as in the scenario file, "
-                                         "e.g. sea.Hs=0.6, fender.mu_s=0.5, radiation.method=convolution")
+    path = r"[A-Za-z_][A-Za-z0-9_]*(\.[A-Za-z_][A-Za-z0-9_]*)" + ("*" if campaign else "+")
+    if not eq or not re.fullmatch(path, key) or not raw:
+        example = "seeds=2, access=600, set.thrust.force=100e3, axes.sea.Hs=[0.5,1.0]" if campaign else \
+            "sea.Hs=0.6, fender.mu_s=0.5, radiation.method=convolution"
+        raise argparse.ArgumentTypeError(f"{text!r}: expected KEY=VALUE with a key path as in the "
+                                         f"{'campaign' if campaign else 'scenario'} file, e.g. {example}")
     try:
         value = tomllib.loads(f"v = {raw}")["v"]
     except tomllib.TOMLDecodeError:
         value = raw
     return key, value
+
+
+def campaign_setting(text: str) -> tuple[str, object]:
+    """``--set KEY=VALUE`` of ``boatland campaign`` (:func:`parse_setting` with a campaign's key paths)."""
+    return parse_setting(text, campaign=True)
 
 
 def set_option(cmd) -> None:
@@ -257,16 +266,14 @@ def freq_setup(args, scenario, db):
 
 
 def kernels_cached() -> bool:
-    """Whether numba's on-disk cache holds the trial's main kernels for this source (a missing or stale
-    index means the next trial compiles them first, ~30 s). Unknown (numba internals changed): True."""
+    """Whether numba's on-disk cache holds the kernels every trial compiles first (the stepper and the fender:
+    most of the compile time; a missing or stale index means the next trial compiles them, ~30 s). Unknown
+    (numba internals changed): True."""
     try:
         from boatland.contact.fender import decide_modes
         from boatland.integrate.cummins import run_cummins
-        from boatland.trial.events import track_landing
-        from boatland.waves.synthesis import harmonic_sum_kernel
 
-        return all(bool(k._cache._cache_file._load_index())
-                   for k in (run_cummins, decide_modes, track_landing, harmonic_sum_kernel))
+        return all(bool(k._cache._cache_file._load_index()) for k in (run_cummins, decide_modes))
     except Exception:  # noqa: BLE001 - a notice only: never stop a run over it
         return True
 

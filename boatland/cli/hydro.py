@@ -7,7 +7,8 @@ import json
 from pathlib import Path
 
 from boatland.cli.common import DEFAULT_VESSEL
-from boatland.cli.guard import Output, check_outputs, finite, no_subcommand, positive
+from boatland.cli.guard import finite, no_subcommand, positive
+from boatland.outputs import Output, check_outputs
 from boatland.errors import BoatlandInputError
 
 __all__ = ["add_parser", "cmd_import", "cmd_info", "cmd_build", "cmd_list"]

@@ -7,7 +7,8 @@ import sys
 from pathlib import Path
 
 from boatland.cli.common import DEFAULT_VESSEL
-from boatland.cli.guard import Output, check_outputs, in_range, integer, positive, same_file
+from boatland.cli.guard import in_range, integer, positive
+from boatland.outputs import Output, check_outputs, same_file
 from boatland.errors import BoatlandInputError
 
 __all__ = ["add_parser", "cmd"]

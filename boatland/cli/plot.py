@@ -5,7 +5,8 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-from boatland.cli.guard import Output, check_outputs, integer
+from boatland.cli.guard import integer
+from boatland.outputs import Output, check_outputs
 
 __all__ = ["add_parser", "cmd"]
 

@@ -7,7 +7,8 @@ import sys
 from pathlib import Path
 
 from boatland.cli.common import freq_directions, freq_load, freq_sea, scenario_argument
-from boatland.cli.guard import Output, finite, positive
+from boatland.cli.guard import finite, positive
+from boatland.outputs import Output
 from boatland.reproducible import pinned
 from boatland.errors import BoatlandInputError
 

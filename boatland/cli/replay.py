@@ -5,7 +5,8 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-from boatland.cli.guard import Output, check_outputs, integer
+from boatland.cli.guard import integer
+from boatland.outputs import Output, check_outputs
 
 __all__ = ["add_parser", "cmd"]
 
@@ -47,6 +48,11 @@ def cmd(args) -> int:
     log = done.log
     print(f"{args.log}: {len(log.columns)} steps, t = 0 … {log.duration:.2f} s, {len(log.events)} events"
           + ("" if log.complete else " (recovered from a truncated log)"))
+    t, what = done.moment
+    if done.shown:
+        print(f"the viewer shows t = {t:.2f} s: {what}")
+    else:
+        print(f"look at t = {t:.2f} s: {what} (the viewer opens at the start; drag its time cursor there)")
     if done.kind == "save":
         print(f"wrote {done.where} (open it with 'rerun {done.where}')")
     elif done.kind == "serve":

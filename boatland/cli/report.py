@@ -4,7 +4,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from boatland.cli.guard import Output, accept_arg, check_outputs, in_range
+from boatland.cli.guard import accept_arg, in_range
+from boatland.outputs import Output, check_outputs
 
 __all__ = ["add_parser", "cmd"]
 

@@ -172,7 +172,7 @@ def _log_path(args, scenario) -> Path | None:
 
 
 def _outputs(args, scenario) -> list:
-    from boatland.cli.guard import Output
+    from boatland.outputs import Output
 
     outs = [Output("-o", args.output)]
     log = _log_path(args, scenario)

@@ -15,7 +15,8 @@ from boatland.cli.common import (
     screening_options,
     settings_changes,
 )
-from boatland.cli.guard import Output, in_range, integer, positive
+from boatland.cli.guard import in_range, integer, positive
+from boatland.outputs import Output
 from boatland.errors import BoatlandInputError
 from boatland.reproducible import pinned
 

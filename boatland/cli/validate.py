@@ -8,7 +8,8 @@ import tempfile
 import time
 from pathlib import Path
 
-from boatland.cli.guard import Output, check_outputs, integer
+from boatland.cli.guard import integer
+from boatland.outputs import Output, check_outputs
 from boatland.errors import BoatlandInputError
 from boatland.reproducible import pinned
 

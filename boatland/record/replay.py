@@ -13,22 +13,27 @@ from pathlib import Path
 
 from boatland.record.mcap_log import NS
 from boatland.record.reader import RunLog, read_run_log
-from boatland.record.rerun_log import DEFAULT_BIND, DEFAULT_PORT, RerunView, check_target, open_stream
+from boatland.record.rerun_log import DEFAULT_BIND, DEFAULT_PORT, RerunView, check_target, key_moment, open_stream, \
+    show_moment
 from boatland.record.scene import scene_from_metadata
 
-__all__ = ["replay", "Replayed"]
+__all__ = ["replay", "Replayed", "waves_from"]
 
 
 @dataclass(frozen=True, eq=False)
 class Replayed:
     """What :func:`replay` did: the log read, the open stream, the target kind and where it went
-    (file path or server URL), and notes on what was recovered or could not be rebuilt."""
+    (file path or server URL), notes on what was recovered or could not be rebuilt, the moment worth
+    looking at (:func:`~boatland.record.rerun_log.key_moment`: time [s], what it is) and whether the
+    viewer's time cursor was moved there (``spawn``, ``connect``)."""
 
     log: RunLog
     stream: object
     kind: str
     where: str | None
     notes: list
+    moment: tuple = (0.0, "the start")
+    shown: bool = False
 
 
 def replay(path: str | Path, target: str, *, quiet: bool = False, bind: str = DEFAULT_BIND,
@@ -60,4 +65,18 @@ def replay(path: str | Path, target: str, *, quiet: bool = False, bind: str = DE
     rec.flush()
     if kind in ("save", "spawn", "connect"):
         rec.disconnect()
-    return Replayed(log, rec, kind, where, list(log.notes) + list(scene.notes))
+    moment = key_moment(log.columns, waves_from(log.metadata))
+    shown = kind in ("spawn", "connect") and show_moment(where, moment[0])
+    return Replayed(log, rec, kind, where, list(log.notes) + list(scene.notes), moment, shown)
+
+
+def waves_from(metadata: dict) -> float:
+    """When the run's settling ended (its waves began) [s], from the log's provenance; 0 if not recorded."""
+    import json
+
+    prov = metadata.get("provenance") or {}
+    try:
+        prov = json.loads(prov) if isinstance(prov, str) else prov
+        return float(prov.get("waves_from", 0.0))
+    except (ValueError, TypeError, AttributeError):
+        return 0.0

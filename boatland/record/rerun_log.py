@@ -29,10 +29,10 @@ from boatland.record.columns import BowElevation, Columns, LandingTracker, settl
 from boatland.record.mcap_log import columns_from_block, end_event, step_events
 from boatland.trial.incidents import IncidentWatch
 from boatland.record.scene import COLORS, FENDER_RADIUS, FORCE_SCALE, MODE_COLORS, PATCH_DT, PILE_BOTTOM, PILE_TOP, \
-    Scene, fender_forces, scene_from_trial
+    SERIES, SERIES_LIGHT, Scene, fender_forces, scene_from_trial
 
 __all__ = ["RerunView", "RerunLog", "parse_target", "open_stream", "check_target", "blueprint", "serve_until_interrupted",
-           "spawn_viewer", "exposure_warning", "APPLICATION_ID", "TIMELINE"]
+           "spawn_viewer", "exposure_warning", "key_moment", "show_moment", "APPLICATION_ID", "TIMELINE"]
 
 APPLICATION_ID = "boatland"
 TIMELINE = "sim_time"
@@ -157,30 +157,91 @@ def _check_viewer(url: str) -> None:
 
 
 def blueprint(n_contacts: int = 0, scene: Scene | None = None):
-    """The default layout: the 3D scene left, looking at the bow and the landing (``scene.camera()``);
-    right, time series — heave and the wave at the bow; roll and pitch; fender forces; thrust; slip
-    distance — and the events."""
+    """The default layout: left, the 3D scene looking at the bow and the landing (``scene.camera()``) above
+    the events (wide enough for their text); right, time series — heave and the wave at the bow; roll and
+    pitch; each contact's needed and available friction (its normal and friction forces are logged too, one
+    click away); thrust; slip distance — each with its legend inside the plot."""
     import rerun.blueprint as rrb
 
     eye = None
     if scene is not None:
         position, target = scene.camera()
         eye = rrb.EyeControls3D(position=position, look_target=target, eye_up=[0.0, 0.0, 1.0])
-    plots = lambda name, *paths: rrb.TimeSeriesView(origin="/plots", contents=list(paths), name=name)  # noqa: E731
+    legend = rrb.PlotLegend(corner="LeftTop", visible=True)
+    plots = lambda name, *paths: rrb.TimeSeriesView(origin="/plots", contents=list(paths), name=name,  # noqa: E731
+                                                    plot_legend=legend)
+    fender = [f"/plots/fender/{k}/{q}" for k in range(n_contacts) for q in ("needed", "available")] or ["/plots/fender/**"]
     return rrb.Blueprint(
         rrb.Horizontal(
-            rrb.Spatial3DView(origin="/world", name="Landing", eye_controls=eye, line_grid=rrb.LineGrid3D(visible=False),
-                              background=rrb.Background(kind="SolidColor", color=COLORS["sky"])),
+            rrb.Vertical(
+                rrb.Spatial3DView(origin="/world", name="Landing", eye_controls=eye,
+                                  line_grid=rrb.LineGrid3D(visible=False),
+                                  background=rrb.Background(kind="SolidColor", color=COLORS["sky"])),
+                rrb.TextLogView(origin="/events", name="Events"),
+                row_shares=[3, 1]),
             rrb.Vertical(
                 plots("Heave and wave at the bow [m]", "/plots/motion/heave", "/plots/sea/bow_elevation"),
                 plots("Roll, pitch [deg]", "/plots/motion/roll", "/plots/motion/pitch"),
-                plots("Fender forces vs available friction [kN]", "/plots/fender/**"),
+                plots("Friction needed vs available, per contact [kN]", *fender),
                 plots("Thrust [kN]", "/plots/loads/thrust"),
                 plots("Slip distance from landing [m]", "/plots/slip/**"),
-                rrb.TextLogView(origin="/events", name="Events"),
-                row_shares=[2, 1.5, 2, 1, 1.5, 1.2]),
+                row_shares=[2, 1.5, 2.5, 1, 1.5]),
             column_shares=[3, 2]),
         collapse_panels=True)
+
+
+def key_moment(c: Columns, t_from: float = 0.0) -> tuple[float, str]:
+    """The moment a replay opens at: the first slip from ``t_from`` (the end of the settling) on, else the
+    most loaded moment — the largest needed / available friction of any contact — and what it is, in words.
+
+    Returns
+    -------
+    (float, str)
+        Time [s] and e.g. ``"the first slip (contact 0)"`` or ``"the most loaded moment (contact 1 at 87 %
+        of its friction)"``; (``t_from``, "the start of the access") when no contact ever carried load.
+    """
+    rows = np.flatnonzero(c.t >= t_from - 1e-9)
+    if not rows.size:
+        return float(c.t[0]) if len(c) else 0.0, "the start"
+    mode = c.mode[rows]
+    slip = np.flatnonzero((mode == 2).any(axis=1))
+    if slip.size:
+        r = rows[slip[0]]
+        return float(c.t[r]), f"the first slip (contact {int(np.argmax(c.mode[r] == 2))})"
+    with np.errstate(divide="ignore", invalid="ignore"):
+        use = np.where(c.available[rows] > 0, c.needed[rows] / c.available[rows], 0.0)
+    if not use.size or not np.nanmax(use) > 0:
+        return float(c.t[rows[0]]), "the start of the access"
+    i, k = np.unravel_index(np.nanargmax(use), use.shape)
+    return float(c.t[rows[i]]), f"the most loaded moment (contact {k} at {use[i, k]:.0%} of its friction)"
+
+
+def show_moment(url: str, t: float, timeout: float = 10.0) -> bool:
+    """Move the time cursor of the viewer at ``url`` to ``t`` [s] on the run's timeline, paused (Rerun's
+    experimental ``ViewerClient``; the blueprint has no field for the cursor, Rerun 0.41). Waits up to
+    ``timeout`` for the viewer to hold the recording's data there. False, silently, when the viewer cannot be
+    driven (another Rerun, a web viewer): the replay is complete either way."""
+    import time
+    import warnings
+
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            from rerun.experimental import ViewerClient
+
+            client = ViewerClient.connect(url)
+            deadline = time.monotonic() + timeout
+            while True:            # the stream may still be arriving: wait until its timeline reaches t
+                state = client.get_state()
+                rec = next((r for r in state.recordings if r.store_id == state.active_recording), None)
+                line = next((tl for tl in (rec.timelines if rec else ()) if tl.name == TIMELINE), None)
+                if line is not None and line.end >= round(t * 1e9) or time.monotonic() > deadline:
+                    break
+                time.sleep(0.1)
+            client.set_time(TIMELINE, duration=t, play_state="paused")
+        return True
+    except Exception:  # noqa: BLE001 - pointing the viewer is a courtesy; the data is there regardless
+        return False
 
 
 def check_target(target: str, *, bind: str = DEFAULT_BIND, port: int = DEFAULT_PORT) -> tuple[str, str | None]:
@@ -242,6 +303,9 @@ def open_stream(target: str, *, recording_id: str | None = None, n_contacts: int
         spawn_viewer(bind, port)
         where = _proxy_url(bind, port)
         rec.connect_grpc(where, default_blueprint=bp)
+    # active too: a viewer keeps the layout it last showed for the application (persisted on disk), which
+    # would hide a newer boatland's layout; the user's own changes last until the next run or replay
+    rec.send_blueprint(bp, make_active=True, make_default=True)
     return rec, kind, where
 
 
@@ -292,15 +356,19 @@ class RerunView:
             # would shadow them
             rec.log("/world/sea", rr.Mesh3D.from_fields(triangle_indices=tri, albedo_factor=COLORS["sea"]),
                     static=True)
-        styles = {"/plots/motion/heave": "heave [m]", "/plots/motion/roll": "roll [deg]",
-                  "/plots/motion/pitch": "pitch [deg]", "/plots/loads/thrust": "thrust [kN]",
-                  "/plots/sea/bow_elevation": "wave at the bow [m]"}
+        styles = {"/plots/motion/heave": ("heave [m]", SERIES[0]),
+                  "/plots/sea/bow_elevation": ("wave at the bow [m]", SERIES_LIGHT[0]),
+                  "/plots/motion/roll": ("roll [deg]", SERIES[2]), "/plots/motion/pitch": ("pitch [deg]", SERIES[4]),
+                  "/plots/loads/thrust": ("thrust [kN]", SERIES[5])}
         for k in range(self.nc):
-            for name in ("normal", "friction", "needed", "available"):
-                styles[f"/plots/fender/{k}/{name}"] = f"contact {k} {name}"
-            styles[f"/plots/slip/{k}"] = f"contact {k}"
-        for path, name in styles.items():
-            rec.log(path, rr.SeriesLines(names=name), static=True)
+            pair = (SERIES[k % len(SERIES)], SERIES_LIGHT[k % len(SERIES)])
+            styles[f"/plots/fender/{k}/needed"] = (f"contact {k} needed", pair[0])
+            styles[f"/plots/fender/{k}/available"] = (f"contact {k} available", pair[1])
+            styles[f"/plots/fender/{k}/friction"] = (f"contact {k} friction", pair[0])
+            styles[f"/plots/fender/{k}/normal"] = (f"contact {k} normal", SERIES[7])
+            styles[f"/plots/slip/{k}"] = (f"contact {k}", pair[0])
+        for path, (name, color) in styles.items():
+            rec.log(path, rr.SeriesLines(names=name, colors=[color]), static=True)
 
     def columns(self, c: Columns) -> None:
         import rerun as rr

@@ -25,7 +25,7 @@ import numpy as np
 
 __all__ = ["Scene", "ContactGeometry", "scene_from_trial", "scene_from_metadata", "scene_metadata", "box_hull",
            "hull_geometry", "hull_parts", "hull_triangles", "fender_forces", "COLORS", "MODE_COLORS",
-           "FORCE_SCALE"]
+           "SERIES", "SERIES_LIGHT", "FORCE_SCALE"]
 
 PILE_TOP, PILE_BOTTOM = 12.0, -20.0   # [m] drawn extent of the monopile, and of tubes without ends (z, global)
 PATCH_HALF = (24.0, 14.0)           # [m] half sizes of the sea patch around the vessel at rest (x, y)
@@ -45,6 +45,14 @@ COLORS = {
     "fender": (40, 40, 40, 255),           # black rubber (overridden by the contact state while it runs)
     "sky": (176, 196, 214, 255),           # background of the 3D view
 }
+#: Colours of the plotted series (matplotlib's tab10 and the light half of its tab20 pairs): per contact k,
+#: ``needed`` is ``SERIES[k]`` and ``available`` its light pair ``SERIES_LIGHT[k]``, so each contact's two
+#: lines read as one pair and no two series of a plot share a colour.
+SERIES = np.array([[31, 119, 180], [255, 127, 14], [44, 160, 44], [214, 39, 40], [148, 103, 189],
+                   [140, 86, 75], [227, 119, 194], [127, 127, 127], [188, 189, 34], [23, 190, 207]], np.uint8)
+SERIES_LIGHT = np.array([[174, 199, 232], [255, 187, 120], [152, 223, 138], [255, 152, 150], [197, 176, 213],
+                         [196, 156, 148], [247, 182, 210], [199, 199, 199], [219, 219, 141], [158, 218, 229]],
+                        np.uint8)
 #: Colours of the contact states (index = mode): open, stick, slip, off the landing.
 MODE_COLORS = np.array([[150, 150, 150, 255], [40, 190, 60, 255], [230, 40, 40, 255],
                         [120, 0, 160, 255]], np.uint8)

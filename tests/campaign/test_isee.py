@@ -120,6 +120,23 @@ def test_the_store_holds_samples_runs_and_limits(reference):
     assert "limiting Hs" in r.stdout and "P(first slip)" in r.stdout
 
 
+def test_the_store_opens_as_a_dataset_of_samples_runs_and_limits(reference):
+    pytest.importorskip("xarray")
+    from boatland.campaign import open_store
+
+    _, one, _ = reference
+    ds = open_store(one)
+    with h5py.File(one, "r") as f:
+        t, runs, lim = f["trials"][()], f["stats"][()], f["isee_limits"][()]
+    assert ds.attrs["method"] == "isee" and ds.sizes["trial"] == len(t) and ds.sizes["run"] == len(runs)
+    assert list(ds.case.values) == list(lim["case"]) and list(ds["run case"].values) == list(runs["case"])
+    assert np.array_equal(ds["first slip: P"].values, runs["first slip: P"])
+    assert np.array_equal(ds["limiting Hs"].values, lim["limiting Hs"], equal_nan=True)
+    assert np.array_equal(ds.isee_log_pbar.values, t["isee_log_pbar"])
+    slip = ds.time_to_incident.sel(incident="first slip").values
+    assert np.array_equal(slip, t["incident: first slip"], equal_nan=True)
+
+
 def test_report_and_heaviest_samples(reference):
     camp, one, r = reference
     rep = one.parent / "rep"

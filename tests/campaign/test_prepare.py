@@ -61,14 +61,15 @@ def test_shipped_case_data_gives_the_trial_a_worker_makes_itself(mini, monkeypat
     assert sorted(shared) == [0, 1, 2, 3] and all(len(d.tables) == 1 for d in shared.values())
     assert shared[0].tables[0] is shared[2].tables[0]            # same direction (Hs differs): one table
     spec = campaign.trials()[3]                                     # case 1, second seed
-    own = execute_trial(str(path), spec, LOADERS)                   # memory, check, arrays, tables: its own
+    own = execute_trial(campaign, spec, LOADERS)                    # memory, check, arrays, tables: its own
     monkeypatch.setattr(prepare, "_WORKER", {})
     monkeypatch.setattr(pd, "_TABLES", {})
     monkeypatch.setattr(Setup, "memory", made_again)
     monkeypatch.setattr(boatland.checks.memory, "check_radiation", made_again)
     monkeypatch.setattr(sim, "compile_motion", made_again)
     monkeypatch.setattr(pd, "_scattered_columns", made_again)
-    shipped = execute_trial(str(path), spec, LOADERS, None, pickle.loads(pickle.dumps(shared[spec.case])))
+    shipped = execute_trial(pickle.loads(pickle.dumps(campaign)), spec, LOADERS, None,
+                            pickle.loads(pickle.dumps(shared[spec.case])))
     assert shipped["status"] == 0 and bits(shipped) == bits(own)
 
 

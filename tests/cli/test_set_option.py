@@ -51,3 +51,24 @@ def test_screen_takes_settings(capsys):
     # a harder push holds in higher seas (Grøtting 2015 §5.5: the limit grows with μ F_b) in every cell
     lo, hi = np.array(base["Hs_limit"], dtype=float), np.array(more["Hs_limit"], dtype=float)
     assert lo.shape == hi.shape and np.all(hi[np.isfinite(lo)] > lo[np.isfinite(lo)])
+
+
+@pytest.mark.parametrize("setting, said", [
+    ("seeds=0", "demo.toml: --set seeds: must be ≥ 1, got 0"),
+    ("sneeds=2", "demo.toml: --set sneeds: unknown key (did you mean 'seeds'?)"),
+    ("set.sea.Hs=-1", "demo.toml: --set set.sea.Hs: must be > 0, got -1"),
+    ("axes.sea.Hs=[]", "demo.toml: --set axes.sea.Hs: must be a non-empty list of values"),
+    ("seeds.x=1", "demo.toml: --set seeds.x: seeds is not a table"),
+])
+def test_a_campaign_setting_is_validated_as_the_file_and_named(setting, said, tmp_path, capsys):
+    assert main(["campaign", "demo", "--set", setting, "-o", str(tmp_path / "d.h5")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("boatland: error: ") and err[0].endswith(said)
+    assert not list(tmp_path.iterdir())
+
+
+def test_a_campaign_setting_may_be_a_top_level_key():
+    assert parse_setting("seeds=2", campaign=True) == ("seeds", 2)
+    assert parse_setting("axes.sea.Hs=[0.5, 1.0]", campaign=True) == ("axes.sea.Hs", [0.5, 1.0])
+    with pytest.raises(argparse.ArgumentTypeError, match="as in the campaign file, e.g. seeds=2"):
+        parse_setting("seeds", campaign=True)

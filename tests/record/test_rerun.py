@@ -127,7 +127,8 @@ def test_default_blueprint_has_a_camera_on_the_landing_and_the_plot_views(record
     assert any(isinstance(v, rrb.Spatial3DView) for v in views.values())
     titles = [str(k) for k in views]
     assert any("Thrust" in t for t in titles) and any("wave at the bow" in t for t in titles)
-    assert any("Fender forces" in t for t in titles) and any("[deg]" in t for t in titles)
+    assert any("Friction needed vs available" in t for t in titles) and any("[deg]" in t for t in titles)
+    assert any(isinstance(v, rrb.TextLogView) for v in views.values())
 
 
 def test_replay_of_the_mcap_equals_the_live_stream(recorded, live, tmp_path):
