@@ -51,6 +51,8 @@ def cmd(args) -> int:
                     f"{args.scatter}: direction (relative to the vessel's heading {setup.heading_deg:g}°)")
     sea, _ = freq_sea(scenario)
     depth = scenario.sea.water_depth if scenario.sea is not None else None
+    print(f"screening {scenario.name} over the {scatter.direction_deg.size} sea states of {args.scatter} …",
+          file=sys.stderr, flush=True)
     a = availability(db, setup, scatter, accept=args.accept, statistics=args.statistics, method=args.method,
                      sea=sea, water_depth=depth, access_duration=args.access, mu=args.mu, thrust=args.thrust)
     if args.json:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import sys
 from pathlib import Path
 
 from boatland.cli.common import (
@@ -109,6 +110,7 @@ def cmd(args) -> int:
     depth = scenario.sea.water_depth if scenario.sea is not None else None
     if args.shear_sweep is not None:
         return _shear_sweep(args, scenario, db, setup, beta, sea, depth)
+    print(f"screening {scenario.name}: {len(Tp)} peak periods × {len(beta)} headings …", file=sys.stderr, flush=True)
     table = screening_grid(db, setup, Tp, beta, accept=args.accept, statistics=args.statistics, method=args.method,
                            sea=sea, water_depth=depth, access_duration=args.access, mu=args.mu, thrust=args.thrust)
     mu = setup.mu if args.mu is None else args.mu
