@@ -9,7 +9,7 @@ import tempfile
 from pathlib import Path
 from typing import Iterator
 
-__all__ = ["atomic_path", "fsync_path", "stale_parts", "remove_stale_parts"]
+__all__ = ["atomic_path", "atomic_hdf5", "fsync_path", "stale_parts", "remove_stale_parts"]
 
 
 def fsync_path(path: str | os.PathLike) -> None:
@@ -64,7 +64,12 @@ def atomic_path(target: str | os.PathLike) -> Iterator[Path]:
     os.close(fd)
     tmp_path = Path(tmp)
     try:
-        yield tmp_path
+        try:
+            yield tmp_path
+        except OSError as exc:        # named by the file the user asked for, not the temporary one
+            if exc.errno is not None and exc.filename in (None, str(tmp_path), tmp_path):
+                raise OSError(exc.errno, exc.strerror, str(target)) from None
+            raise
         umask = os.umask(0)
         os.umask(umask)
         os.chmod(tmp_path, 0o666 & ~umask)
@@ -74,3 +79,32 @@ def atomic_path(target: str | os.PathLike) -> Iterator[Path]:
     finally:
         if tmp_path.exists():
             tmp_path.unlink()
+
+
+@contextlib.contextmanager
+def atomic_hdf5(target: str | os.PathLike, mode: str = "w", **file_kwargs):
+    """Yield an ``h5py.File`` built in memory, then write it to ``target`` whole (:func:`atomic_path`).
+
+    HDF5 itself never writes to the disk: a full disk or a file-size limit (``ulimit -f``) is then one
+    ``OSError`` of the final Python write, with nothing left behind — where HDF5's own I/O failing mid-file
+    leaves the library in a state that can crash the process as it exits. ``mode`` ``"w"`` starts empty;
+    ``"r+"`` starts from ``target``'s contents (to change an existing file). The whole file is in memory
+    while it is made.
+    """
+    import io
+
+    import h5py
+
+    target = Path(target)
+    if mode not in ("w", "r+"):
+        raise ValueError(f"mode must be 'w' or 'r+', got {mode!r}")
+    buffer = io.BytesIO()
+    if mode == "r+":
+        with open(target, "rb") as fh:
+            buffer.write(fh.read())
+    with h5py.File(buffer, mode, **file_kwargs) as f:
+        yield f
+    image = buffer.getbuffer()
+    with atomic_path(target) as tmp:
+        with open(tmp, "wb") as fh:
+            fh.write(image)

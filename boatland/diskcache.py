@@ -37,7 +37,7 @@ from typing import Callable, Iterable, TypeVar
 
 import numpy as np
 
-from boatland.atomic import atomic_path
+from boatland.atomic import atomic_hdf5
 
 __all__ = ["cache_dir", "cache_key", "cached", "lookup", "store", "MAX_BYTES", "MAX_ENTRY_BYTES", "ENV"]
 
@@ -136,13 +136,11 @@ def _read(path: Path, key: str, read: Callable):
 
 
 def _write(folder: Path, path: Path, key: str, write: Callable, value) -> None:
-    import h5py
 
     try:
-        with atomic_path(path) as tmp:
-            with h5py.File(tmp, "w") as f:
-                f.attrs["boatland_cache_key"] = key
-                write(f, value)
+        with atomic_hdf5(path) as f:
+            f.attrs["boatland_cache_key"] = key
+            write(f, value)
     except OSError:
         return                                   # a full or read-only disk: no entry, nothing lost
     _prune(folder)

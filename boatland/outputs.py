@@ -3,7 +3,8 @@
 Every command lists its inputs (the files it reads, including those a scenario refers to) and its
 outputs (files, figures, folders) and calls :func:`check_outputs` before loading or computing
 anything heavy. An output is refused, with one line naming its flag and what would be valid, when it
-is a folder where a file is meant (or a file where a folder is meant), its folder does not exist or
+is a folder where a file is meant (or a file where a folder is meant), a symbolic link (writing would change
+the file it points to), a FIFO, device or socket (which it would replace), its folder does not exist or
 cannot be written, a figure's suffix is not a format matplotlib writes, it is the same file as an
 input (resolved paths and ``os.path.samefile``), or it is the same file as another output.
 
@@ -12,6 +13,7 @@ Writing itself is :mod:`boatland.atomic`'s (temp file + rename: nothing half-wri
 from __future__ import annotations
 
 import os
+import stat
 import tempfile
 from dataclasses import dataclass
 from pathlib import Path
@@ -50,7 +52,7 @@ def same_file(a: Path, b: Path) -> bool:
         if Path(a).resolve() == Path(b).resolve():
             return True
         return Path(a).exists() and Path(b).exists() and os.path.samefile(a, b)
-    except OSError:
+    except (OSError, RuntimeError):      # RuntimeError: a symlink loop (pathlib's resolve)
         return False
 
 
@@ -84,8 +86,16 @@ def _check_one(out: Output) -> None:
         if why:
             raise BoatlandInputError(f"{flag} {p}: cannot write in {where} ({why})")
         return
+    if p.is_symlink():      # writing through it would change the file it points to (or follow a loop)
+        raise BoatlandInputError(f"{flag} {p}: is a symbolic link (to {os.readlink(p)}); boatland writes only "
+                                 "files it names itself — give the target's own path or another name")
     if p.is_dir():
         raise BoatlandInputError(f"{flag} {p}: is a folder; give a file name")
+    if p.exists() and not stat.S_ISREG(p.stat().st_mode):
+        kind = next((name for test, name in ((stat.S_ISFIFO, "a FIFO"), (stat.S_ISCHR, "a character device"),
+                                             (stat.S_ISBLK, "a block device"), (stat.S_ISSOCK, "a socket"))
+                     if test(p.stat().st_mode)), "not a regular file")
+        raise BoatlandInputError(f"{flag} {p}: is {kind}, which an output would replace; give a file name")
     if not p.name or p.name in (".", ".."):
         raise BoatlandInputError(f"{flag} {p}: not a file name")
     if out.kind == "figure":
@@ -131,6 +141,12 @@ def check_outputs(outputs: Sequence[Output], inputs: Iterable[Path | str | None]
     """
     outs = [o for o in outputs if o.path is not None]
     ins = [Path(i) for i in inputs if i is not None and str(i) != ""]
+    for out in outs:                     # a link is never written through (nor resolved: it may loop)
+        for f in _files_of(out):
+            if f.is_symlink():
+                raise BoatlandInputError(f"{out.flag} {f}: is a symbolic link (to {os.readlink(f)}); boatland "
+                                         "writes only files it names itself — give the target's own path or "
+                                         "another name")
     for out in outs:
         for f in _files_of(out) + ([Path(out.path)] if out.kind == "folder" else []):
             for i in ins:

@@ -14,6 +14,8 @@ from pathlib import Path
 
 import numpy as np
 
+from boatland.atomic import atomic_path
+
 __all__ = ["pyplot", "heading_polar", "save_figure", "POLAR_NOTE"]
 
 #: One line for titles or captions of polar figures.
@@ -68,6 +70,9 @@ def save_figure(fig, path: str | Path, *, dpi: int = 110) -> Path:
     plt = pyplot()
     path = Path(path)
     meta = {"Title": figure_title(fig), "Software": f"boatland {__version__}"} if path.suffix.lower() == ".png" else None
-    fig.savefig(path, dpi=dpi, metadata=meta)
-    plt.close(fig)
+    try:
+        with atomic_path(path) as tmp:      # nothing half-written; a full disk names the figure
+            fig.savefig(tmp, dpi=dpi, metadata=meta, format=path.suffix[1:].lower() or None)
+    finally:
+        plt.close(fig)
     return path

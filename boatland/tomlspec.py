@@ -507,6 +507,8 @@ def parse_toml(text: str, source: str | Path = "<string>") -> dict[str, Any]:
     """Parse TOML text; a syntax error raises :class:`SpecError` naming the line and column."""
     try:
         return tomllib.loads(text)
+    except RecursionError:
+        raise SpecError(str(source), [("", "TOML syntax error: tables or arrays nested too deeply")]) from None
     except tomllib.TOMLDecodeError as exc:
         msg = str(exc)
         m = _LINE_COL.search(msg)
@@ -522,15 +524,17 @@ def parse_toml(text: str, source: str | Path = "<string>") -> dict[str, Any]:
         raise SpecError(str(source), [("", text_msg)]) from None
 
 
-def read_toml_text(path: str | Path) -> str:
-    """The text of a TOML file (missing or unreadable files raise :class:`SpecError`)."""
+def read_toml_text(path: str | Path, what: str = "TOML file") -> str:
+    """The text of a TOML file, read once (:func:`boatland.inputs.read_text_input`: a regular file of at most
+    16 MiB). Missing, unreadable, not a regular file, too large or not UTF-8: :class:`SpecError`."""
+    from boatland.inputs import read_text_input
+
     path = Path(path)
     try:
-        return path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise SpecError(str(path), [("", "file not found")]) from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise SpecError(str(path), [("", f"cannot be read ({exc.__class__.__name__}: {exc})")]) from None
+        return read_text_input(path, what, "toml")
+    except BoatlandInputError as exc:
+        message = str(exc)
+        raise SpecError(str(path), [("", message.removeprefix(f"{path}: "))]) from None
 
 
 def parse_toml_file(path: str | Path) -> dict[str, Any]:

@@ -44,6 +44,20 @@ class Shared(NamedTuple):
     value: Any
 
 
+#: How often a task lost with a Dask worker (killed, disconnected) is sent again before the campaign stops.
+LOST_RETRIES = 3
+_RESENT = object()
+
+
+def _lost_with_worker(exc: BaseException) -> bool:
+    """Whether a Dask task failed with the cluster (its worker killed or gone, its input data lost with it),
+    not in its own code (a trial's own errors are rows, never exceptions)."""
+    import concurrent.futures
+
+    names = {"KilledWorker", "FutureCancelledError", "CancelledError", "CommClosedError", "StreamClosedError"}
+    return isinstance(exc, (concurrent.futures.CancelledError, ConnectionError)) or type(exc).__name__ in names
+
+
 def check_scheduler_address(scheduler: str | None) -> None:
     """A Dask scheduler address must be ``tcp://host:port`` (or tls/ws/wss/ucx).
 
@@ -166,17 +180,46 @@ class Executor:
         self._scattered = {}                       # shared values are this call's (a key may mean another later)
         futures: list = []
         finished: queue.SimpleQueue = queue.SimpleQueue()
-        handed = 0
+        task: dict = {}                            # future → (its arguments, times lost)
+
+        def send(args, lost=0):
+            fut = submit(fn, args)
+            futures.append(fut)
+            task[fut] = (args, lost)
+            fut.add_done_callback(finished.put)
+
+        def result(fut):
+            """The task's result; a task lost with its Dask worker is sent again (its shared values
+            scattered anew), at most LOST_RETRIES times — then the campaign stops in one line."""
+            args, lost = task.pop(fut)
+            try:
+                return fut.result()
+            except Exception as exc:  # noqa: BLE001 - only the cluster's own failures are retried
+                if self.executor != "dask" or not _lost_with_worker(exc):
+                    raise
+                if lost >= LOST_RETRIES:
+                    raise BoatlandInputError(f"the Dask cluster lost a task {lost + 1} times ({type(exc).__name__}: "
+                                             f"{exc}); the finished results are kept — run the same command "
+                                             "again to resume") from None
+                self._scattered = {}
+                send(args, lost + 1)
+                return _RESENT
+
+        pending = 0
         try:
             for args in arglists:
-                fut = submit(fn, args)
-                futures.append(fut)
-                fut.add_done_callback(finished.put)
+                send(args)
+                pending += 1
                 while not finished.empty():        # rows that finished while later tasks were being submitted
-                    handed += 1
-                    yield finished.get().result()
-            for _ in range(len(futures) - handed):
-                yield finished.get().result()
+                    out = result(finished.get())
+                    if out is not _RESENT:
+                        pending -= 1
+                        yield out
+            while pending:
+                out = result(finished.get())
+                if out is not _RESENT:
+                    pending -= 1
+                    yield out
         except BaseException:          # the consumer stopped (an error, Ctrl-C): cancel, stop the workers now
             self._cancel(futures)
             raise
@@ -190,8 +233,10 @@ class Executor:
         def ship(a):
             if not isinstance(a, Shared):
                 return a
-            if a.key not in self._scattered:      # one scattered copy of each shared value (a list too: as one)
-                self._scattered[a.key] = None if a.value is None else self._client.scatter([a.value], hash=False)[0]
+            if a.key not in self._scattered:      # each shared value scattered once (a list too: as one), to every
+                # worker: one worker lost does not lose it (the rest hold it; a restarted worker fetches it)
+                self._scattered[a.key] = None if a.value is None else \
+                    self._client.scatter([a.value], hash=False, broadcast=True)[0]
             return self._scattered[a.key]
 
         return self._client.submit(fn, *(ship(a) for a in args), pure=False)

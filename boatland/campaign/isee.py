@@ -69,7 +69,8 @@ from boatland.campaign.labels import campaign_inputs
 from boatland.campaign.plan import Campaign
 from boatland.campaign.executor import Executor, Shared, check_scheduler_address
 from boatland.campaign.plan import plan_json
-from boatland.campaign.prepare import case_sensitivity, check_cases, database_for, memory_key, worker_context
+from boatland.campaign.prepare import (case_sensitivity, check_cases, checked_inputs, database_for, memory_key,
+                                       worker_context)
 from boatland.campaign.runner import completed, incident_names, summary_row
 from boatland.campaign.store import INCIDENT_PREFIX, CampaignStore
 from boatland.errors import BoatlandInputError
@@ -251,14 +252,15 @@ def _events_text(result, t_access: float) -> str:
     return "; ".join(f"{e.t - t_access:.2f} {e.kind} c{e.contact}" for e in ev[:6])[:200]
 
 
-def execute_sample(campaign: Campaign, spec: SampleSpec, loaders, plain: bool = False) -> dict:
+def execute_sample(campaign: Campaign, spec: SampleSpec, loaders, plain: bool = False, dbs: dict | None = None) -> dict:
     """One ISEE sample of ``campaign``: draw u, the linear indicators, the time-domain
     trial on exactly that sea; its store row (status −1 and the error if it failed; never raises).
 
     ``plain``: a plain Monte Carlo sample of the same Gaussian sea instead, u ~ N(0, I) (the brute force
     the estimator is checked against): ``isee_event`` −1, ``isee_log_pbar`` NaN, ``isee_n`` the elementary
     events of D it exceeds (0 if none: then the linear model sees no slip, and a time-domain incident there
-    would lie outside the sampling domain)."""
+    would lie outside the sampling domain). ``dbs``: the databases by key as the campaign read them (a Dask
+    worker never reads the files; local workers inherit them)."""
     from boatland.checks.memory import check_radiation
     from boatland.trial.simulate import BlowUpError, motion_arrays, simulate
 
@@ -268,6 +270,8 @@ def execute_sample(campaign: Campaign, spec: SampleSpec, loaders, plain: bool = 
     with single_threaded():
         try:
             ctx = worker_context(campaign, loaders)
+            for key, db in (dbs or {}).items():    # as the campaign read them (Dask): never the files again
+                ctx["db"].setdefault(key, db)
             names = incident_names(campaign)
             ss = sample_seed(campaign.master_seed, spec.case, spec.level, spec.sample, plain)
             model = _models(ctx, campaign, spec.case, spec.hs, loaders)
@@ -520,20 +524,22 @@ def run_isee(campaign: Campaign, store_path: str | Path, *, loaders, executor: s
     if s.accept is not None and not _has_hs(campaign):
         raise BoatlandInputError(f"{campaign.source}: isee.accept needs a sea with one spectrum (sea.Hs) to search "
                                  "the limiting Hs along")
+    if executor == "dask":
+        check_scheduler_address(scheduler)
+    check_cases(campaign, loaders[1])
+    digest, digests, dbs = checked_inputs(campaign, loaders[1])    # of what the samples run on
     header = {
-        "campaign": campaign.name, "campaign_digest": campaign.digest(),
+        "campaign": campaign.name, "campaign_digest": digest, "input_digests": json.dumps(digests),
         "campaign_file": campaign.text,
         "plan": plan_json(campaign), "n_trials": len(campaign.cases) * MAX_LEVELS * MAX_SAMPLES,
         "incidents": "\n".join(names), "method": "isee", "isee": json.dumps(asdict(s)),
         "inputs": json.dumps(campaign_inputs(campaign), default=float),   # for the report's inputs and titles
     }
-    if executor == "dask":
-        check_scheduler_address(scheduler)
-    check_cases(campaign, loaders[1])
     store = CampaignStore.open(store_path, header, names, ISEE_FIELDS)
     try:
         with single_threaded():      # prepared here before the workers fork: they inherit it
             ctx = worker_context(campaign, loaders)
+            ctx["db"].update(dbs)    # the databases the checks read: never the files again
             refs = {c.index: _models(ctx, campaign, c.index, _case_hs(campaign, c.index) or 0.0, loaders)
                     for c in campaign.cases}
         curves = {c: _rice_curve(m.margins, _case_hs(campaign, c)) for c, m in refs.items()
@@ -574,7 +580,9 @@ def run_isee(campaign: Campaign, store_path: str | Path, *, loaders, executor: s
                 if not tasks:
                     break
                 total = len(store.rows) + len(tasks)
-                for row in pool.map(execute_sample, [(Shared("campaign", campaign), t, loaders) for t in tasks]):
+                dask = executor == "dask"      # its workers get the databases read here, once each
+                for row in pool.map(execute_sample, [(Shared("campaign", campaign), t, loaders, False,
+                                                      Shared("dbs", dbs) if dask else None) for t in tasks]):
                     store.add(row)
                     if progress:
                         progress(len(store.rows), total)

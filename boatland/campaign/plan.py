@@ -205,6 +205,7 @@ class Campaign:
     keep_series: tuple
     document: dict
     text: str = ""
+    scenario_digest: str = ""      # the base scenario as its file gave it (before [set], [incidents])
     access: float | None = None
     _exposure: dict = field(default_factory=dict, repr=False)   # case → exposure_start (scenario_for)
     method: str = "monte-carlo"
@@ -274,6 +275,16 @@ class Campaign:
         for f in files:
             if f.resolve() not in [o.resolve() for o in out]:
                 out.append(f)
+        return out
+
+    def input_digests(self) -> dict[str, str]:
+        """SHA-256 of each input as it is now, by name: the campaign (its document as it runs), the base
+        scenario (as its file gave it, before the campaign's changes: :meth:`Scenario.digest`) and every other file :meth:`input_files` lists — what a
+        store records, so that a resume refused for changed inputs names them."""
+        out = {f"campaign {self.source}": hashlib.sha256(
+                   json.dumps(self.document, sort_keys=True, default=str).encode()).hexdigest(),
+               f"scenario {self.scenario_path}": self.scenario_digest or self.base.digest()}
+        out.update({str(p): file_sha256(p) for p in self.input_files()[1 + self.from_file:]})
         return out
 
     def digest(self) -> str:
@@ -424,6 +435,7 @@ def _campaign(doc: dict, path: Path, source: str, text: str, load_scenario) -> C
     return Campaign(name=data["name"], description=data.get("description", ""), source=source,
                     scenario_path=base_path, base=base, axes=axes, seeds=int(data.get("seeds", 1)),
                     master_seed=int(data.get("master_seed", 0)), keep_series=keep, document=doc, text=text,
+                    scenario_digest=scenario.digest(),
                     access=None if access is None else float(access), method=method, isee=isee)
 
 

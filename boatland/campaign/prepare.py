@@ -32,7 +32,7 @@ from boatland.trial.simulate import exposure_start
 
 __all__ = ["BackgroundWork", "CaseData", "CasePreparation", "campaign_tables", "check_cases", "database_for",
            "first_trial",
-           "case_screening", "case_sensitivity", "memory_key", "prepare_cases", "start_background", "worker_context"]
+           "case_screening", "case_sensitivity", "checked_inputs", "memory_key", "prepare_cases", "start_background", "worker_context"]
 
 
 #: Per worker process: the campaign, its databases and radiation memories (:func:`worker_context`).
@@ -109,9 +109,25 @@ def check_cases(campaign: Campaign, load_database) -> list[str]:
     return list(_checked(campaign, load_database)["warnings"])
 
 
+def checked_inputs(campaign: Campaign, load_database) -> tuple[str, dict, dict]:
+    """``(digest, input digests, databases)`` of the inputs :func:`check_cases` read: the campaign's
+    :meth:`~Campaign.digest` and :meth:`~Campaign.input_digests` as they were while its databases were
+    loaded (checked unchanged from before to after the loading), and those databases by key — what the
+    trials run on and what a store records."""
+    checked = _checked(campaign, load_database)
+    return checked["digest"], checked["inputs"], checked["dbs"]
+
+
 def _checked(campaign: Campaign, load_database) -> dict:
-    """:func:`check_cases`'s work, kept: ``{"warnings", "dbs", "memories", "setups"}`` (each case's
-    :class:`~boatland.landing.setup.Setup`, by case index)."""
+    """:func:`check_cases`'s work, kept: ``{"warnings", "dbs", "memories", "setups", "digest", "inputs"}``
+    (each case's :class:`~boatland.landing.setup.Setup`, by case index).
+
+    Raises
+    ------
+    BoatlandInputError
+        An input file changed while the databases were being read (named; nothing has run).
+    """
+    before = campaign.input_digests()
     key = (campaign.digest(), load_database)
     if key in _CHECKED:
         return _CHECKED[key]
@@ -140,9 +156,16 @@ def _checked(campaign: Campaign, load_database) -> dict:
             warns += [(case.index, where, f"{k}: {m}") for k, m in found.warnings]
     if problems:
         raise SpecError(campaign.source, problems)
+    after = campaign.input_digests()               # what was loaded is what was hashed, or nothing runs
+    changed = [name for name in before if before[name] != after.get(name)]
+    if changed:
+        from boatland.errors import BoatlandInputError
+
+        raise BoatlandInputError(f"{changed[0]}: changed while the campaign was reading its inputs; nothing has "
+                                 "run — run the same command again")
     _CHECKED.clear()                               # one campaign at a time: bounded memory
     _CHECKED[key] = {"warnings": _grouped(warns, len(campaign.cases)), "dbs": dbs, "memories": memories,
-                     "setups": setups}
+                     "setups": setups, "digest": key[0], "inputs": before}
     return _CHECKED[key]
 
 

@@ -62,6 +62,7 @@ from boatland.campaign.labels import (
 from boatland.campaign.runner import completed
 from boatland.campaign.store import FORMAT, INCIDENT_PREFIX
 from boatland.errors import BoatlandInputError
+from boatland.inputs import check_input
 from boatland.freqdomain.statistics import DEFAULT_STATISTICS
 from boatland.trial.incidents import SlipDistance, parse_incident
 
@@ -93,8 +94,7 @@ def read_store(path: str | Path) -> dict:
     import h5py
 
     path = Path(path)
-    if not path.is_file():
-        raise BoatlandInputError(f"{path}: no such file")
+    check_input(path, "campaign store", "hdf5")
     try:
         with h5py.File(path, "r") as f:
             if f.attrs.get("format") != FORMAT:

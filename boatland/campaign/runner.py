@@ -41,7 +41,8 @@ from boatland.campaign.executor import Executor, Shared, check_scheduler_address
 from boatland.campaign.labels import campaign_inputs
 from boatland.campaign.plan import Campaign, TrialSpec, plan_json
 from boatland.campaign.prepare import (BackgroundWork, CaseData, CasePreparation, case_screening, case_sensitivity,
-                                       check_cases, database_for, memory_key, start_background, worker_context)
+                                       check_cases, checked_inputs, database_for, memory_key, start_background,
+                                       worker_context)
 from boatland.campaign.stats import clopper_pearson, exponential_mean_interval
 from boatland.campaign.store import INCIDENT_PREFIX, CampaignStore
 from boatland.integrate.cummins import OUTCOME_STATUSES
@@ -59,15 +60,22 @@ def incident_names(campaign: Campaign) -> list[str]:
     return [d.name for d in campaign_incidents(campaign.base.incidents, campaign.base.fender is not None)]
 
 
+def _db_arg(campaign: Campaign, spec, dbs: dict) -> Shared:
+    """The database of ``spec``'s case as a :class:`Shared` argument (scattered once per database)."""
+    key = campaign.scenario_for(spec).vessel.database_key
+    return Shared(("db", key), (key, dbs[key]))
+
+
 def execute_trial(campaign: Campaign, spec: TrialSpec, loaders, keep_dir: str | None = None,
-                  shared: CaseData | None = None) -> dict:
+                  shared: CaseData | None = None, db: tuple | None = None) -> dict:
     """Run one trial of ``campaign`` and return its summary row (never raises for a failing trial: the row
     carries status −1 and the error).
 
     ``shared``: its case's :class:`~boatland.campaign.prepare.CaseData` from
     :func:`boatland.campaign.prepare.prepare_cases` (the memory checked there). Without
     it the worker makes the radiation memory (once per worker), checks it (once per case) and compiles
-    the kernel arrays and the pile's tables itself — the same values.
+    the kernel arrays and the pile's tables itself — the same values. ``db``: ``(key, database)`` of the case,
+    as the campaign read it (a Dask worker never reads the database file; local workers inherit it).
     """
     from boatland.checks.memory import check_radiation
     from boatland.landing.setup import Setup
@@ -80,6 +88,8 @@ def execute_trial(campaign: Campaign, spec: TrialSpec, loaders, keep_dir: str | 
     pin.__enter__()
     try:
         ctx = worker_context(campaign, loaders)
+        if db is not None:                   # (key, database) read once by the campaign: never the file again
+            ctx["db"].setdefault(*db)
         names = incident_names(campaign)
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
@@ -189,15 +199,16 @@ def run_campaign(campaign: Campaign, store_path: str | Path, *, loaders, executo
     """
     try:
         names = incident_names(campaign)
+        if executor == "dask":
+            check_scheduler_address(scheduler)
+        check_cases(campaign, loaders[1])
+        digest, digests, dbs = checked_inputs(campaign, loaders[1])    # of what the trials run on
         header = {
-            "campaign": campaign.name, "campaign_digest": campaign.digest(),
+            "campaign": campaign.name, "campaign_digest": digest, "input_digests": json.dumps(digests),
             "campaign_file": campaign.text,
             "plan": plan_json(campaign), "n_trials": campaign.n_trials, "incidents": "\n".join(names),
             "inputs": json.dumps(campaign_inputs(campaign), default=float),   # for the report's titles
         }
-        if executor == "dask":
-            check_scheduler_address(scheduler)
-        check_cases(campaign, loaders[1])
         store = CampaignStore.open(store_path, header, names)
         try:
             todo = [s for s in campaign.trials() if s.trial not in store.done()]
@@ -209,11 +220,13 @@ def run_campaign(campaign: Campaign, store_path: str | Path, *, loaders, executo
                 background = start_background(campaign, loaders, executor, workers)
             shared = CasePreparation(campaign, loaders[1], background)   # a case's data when its first trial is sent
             if todo and executor == "local":        # forked workers inherit the campaign and databases
-                worker_context(campaign, loaders)["db"].update(shared.checked["dbs"])
+                worker_context(campaign, loaders)["db"].update(dbs)
             if todo:
                 with Executor(executor, workers, scheduler, connect_timeout) as ex:
                     plan = Shared("campaign", campaign)     # to a Dask cluster once
-                    rows = ex.map(execute_trial, ((plan, spec, loaders, keep, Shared(spec.case, shared.get(spec.case)))
+                    dask = executor == "dask"               # its workers get the databases read here, once each
+                    rows = ex.map(execute_trial, ((plan, spec, loaders, keep, Shared(spec.case, shared.get(spec.case)),
+                                                   _db_arg(campaign, spec, dbs) if dask else None)
                                                   for spec in todo))
                     try:
                         for row in rows:

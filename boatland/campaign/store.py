@@ -43,7 +43,7 @@ from pathlib import Path
 import numpy as np
 
 from boatland import __version__
-from boatland.atomic import atomic_path, remove_stale_parts
+from boatland.atomic import atomic_hdf5, remove_stale_parts
 from boatland.errors import BoatlandInputError
 
 __all__ = ["CampaignStore", "StoreLock", "ROW_FIELDS", "FORMAT"]
@@ -75,8 +75,22 @@ ROW_FIELDS = (
 INCIDENT_PREFIX = "incident: "
 
 
+#: Side files are opened without following a symbolic link planted at their name (ELOOP instead).
+_NOFOLLOW = getattr(os, "O_NOFOLLOW", 0)
+
+
+def _append(path: Path, text: str) -> None:
+    """Append ``text`` to ``path`` and sync it — never through a symbolic link at ``path``."""
+    fd = os.open(path, os.O_WRONLY | os.O_APPEND | os.O_CREAT | _NOFOLLOW | getattr(os, "O_CLOEXEC", 0), 0o644)
+    with os.fdopen(fd, "a", encoding="utf-8") as fh:
+        fh.write(text)
+        fh.flush()
+        os.fsync(fh.fileno())
+
+
 class StoreLock:
-    """Exclusive advisory lock of a store: ``flock`` on ``<store>.lock``, holding the holder's pid."""
+    """Exclusive advisory lock of a store: ``flock`` on ``<store>.lock`` beside the store's real path (its
+    folder resolved: one lock however the folder is reached), holding the holder's pid."""
 
     def __init__(self, store: Path):
         self.store = Path(store)
@@ -91,8 +105,11 @@ class StoreLock:
             return
         while True:
             try:
-                fd = os.open(self.path, os.O_RDWR | os.O_CREAT | getattr(os, "O_CLOEXEC", 0), 0o644)
+                fd = os.open(self.path, os.O_RDWR | os.O_CREAT | _NOFOLLOW | getattr(os, "O_CLOEXEC", 0), 0o644)
             except OSError as exc:
+                if self.path.is_symlink():
+                    raise BoatlandInputError(f"{self.path}: is a symbolic link; boatland never writes through one "
+                                             "— remove it") from None
                 raise BoatlandInputError(f"{self.store}: cannot write the campaign store here "
                                          f"({exc.strerror or exc})") from None
             try:
@@ -122,6 +139,20 @@ class StoreLock:
             pass
         os.close(self.fd)        # closing drops the flock
         self.fd = None
+
+
+def _changed_inputs(theirs, ours) -> str:
+    """The inputs whose SHA-256 differ between a store's ``input_digests`` and this campaign's ("" if the
+    store predates them, or the campaign itself differs beyond its inputs' contents)."""
+    try:
+        a = json.loads(theirs.decode() if isinstance(theirs, bytes) else theirs)
+        b = json.loads(ours)
+    except (TypeError, ValueError, AttributeError):
+        return ""
+    if not isinstance(a, dict) or not isinstance(b, dict) or set(a) != set(b):
+        return ""
+    names = [k for k in b if a[k] != b[k]]
+    return " and ".join(names)
 
 
 def row_dtype(incident_names, extra_fields=()) -> np.dtype:
@@ -162,7 +193,11 @@ class CampaignStore:
         rows: dict[int, dict] = {}
         if not path.parent.is_dir():
             raise BoatlandInputError(f"{path}: cannot write the campaign store here (no folder {path.parent})")
-        lock = StoreLock(path)
+        for p in (path, *(path.with_name(path.name + s) for s in (".lock", ".journal"))):
+            if p.is_symlink():
+                raise BoatlandInputError(f"{p}: is a symbolic link; boatland never writes a store or its side "
+                                         "files through one — remove it, or give another -o")
+        lock = StoreLock(Path(os.path.realpath(path.parent)) / path.name)   # one lock however it is reached
         lock.acquire()
         try:
             store = cls._open_locked(path, header, incident_names, rows, lock, extra_fields)
@@ -182,6 +217,7 @@ class CampaignStore:
                     fmt = f.attrs.get("format")
                     digest = f.attrs.get("campaign_digest")
                     name = f.attrs.get("campaign")
+                    theirs = f.attrs.get("input_digests")
                     data = f["trials"][()] if "trials" in f else None
             except OSError as exc:
                 raise BoatlandInputError(f"{path}: not a readable HDF5 campaign store ({exc})") from None
@@ -189,6 +225,11 @@ class CampaignStore:
                 raise BoatlandInputError(f"{path}: not a boatland campaign store (format {fmt!r}); "
                                          "choose another output file")
             if digest != header["campaign_digest"]:
+                changed = _changed_inputs(theirs, header.get("input_digests"))
+                if changed:
+                    raise BoatlandInputError(
+                        f"{path}: holds results of {name!r} before {changed} changed; refusing to mix them — put it "
+                        "back, or use another output file (or delete this one)")
                 raise BoatlandInputError(
                     f"{path}: holds results of a different campaign ({name!r}, or this one since its campaign file, "
                     "scenario, database or wave record changed); "
@@ -202,8 +243,7 @@ class CampaignStore:
         store = cls(path, header, incident_names, rows, lock, extra_fields)
         store._merge_journal()
         try:  # fail now, before any trial runs, if results cannot be written here
-            with open(store.journal, "a", encoding="utf-8"):
-                pass
+            _append(store.journal, "")
         except OSError as exc:
             raise BoatlandInputError(f"{path}: cannot write the campaign store here ({exc.strerror or exc})") from None
         return store
@@ -213,7 +253,7 @@ class CampaignStore:
             return
         names = {n for n, _, _ in ROW_FIELDS + self.extra_fields}
         n_trials = int(self.header.get("n_trials", 0))
-        with open(self.journal, "rb") as fh:
+        with os.fdopen(os.open(self.journal, os.O_RDONLY | _NOFOLLOW | getattr(os, "O_NONBLOCK", 0)), "rb") as fh:
             for line in fh:
                 try:
                     rec = json.loads(line)
@@ -238,10 +278,7 @@ class CampaignStore:
         self.rows[trial] = row
         line = json.dumps({"campaign_digest": self.header["campaign_digest"], "row": row}, allow_nan=True)
         try:
-            with open(self.journal, "a", encoding="utf-8") as fh:
-                fh.write(line + "\n")
-                fh.flush()
-                os.fsync(fh.fileno())
+            _append(self.journal, line + "\n")
             if time.monotonic() - self._last_write > 10.0:
                 self.write()
         except OSError as exc:  # disk full, permissions: what is on disk stays valid for a resume
@@ -282,24 +319,25 @@ class CampaignStore:
 
         from boatland.netcdf_h5 import copy_group
 
-        with atomic_path(self.path) as tmp:
-            with h5py.File(tmp, "w", track_order=True) as f:
-                f.attrs["format"] = FORMAT
-                f.attrs["boatland_version"] = __version__
-                for k, v in self.header.items():
-                    f.attrs[k] = v
-                f.create_dataset("trials", data=table, maxshape=(None,), chunks=True)
-                f["trials"].attrs["columns"] = json.dumps({n: d for n, _, d in ROW_FIELDS + self.extra_fields})
-                if stats is not None:
-                    f.create_dataset("stats", data=stats)
-                for name, data in datasets.items():
-                    f.create_dataset(name, data=data)
-                for src in series:     # netCDF-4 groups: xarray.open_dataset(store, group="series/trial_…")
-                    with h5py.File(src, "r") as s:
-                        copy_group(s, f.require_group("series").create_group(src.stem, track_order=True))
-        with open(self.journal, "w", encoding="utf-8") as fh:   # everything is in the HDF5 file now
-            fh.flush()
-            os.fsync(fh.fileno())
+        with atomic_hdf5(self.path, track_order=True) as f:
+            f.attrs["format"] = FORMAT
+            f.attrs["boatland_version"] = __version__
+            for k, v in self.header.items():
+                f.attrs[k] = v
+            f.create_dataset("trials", data=table, maxshape=(None,), chunks=True)
+            f["trials"].attrs["columns"] = json.dumps({n: d for n, _, d in ROW_FIELDS + self.extra_fields})
+            if stats is not None:
+                f.create_dataset("stats", data=stats)
+            for name, data in datasets.items():
+                f.create_dataset(name, data=data)
+            for src in series:     # netCDF-4 groups: xarray.open_dataset(store, group="series/trial_…")
+                with h5py.File(src, "r") as s:
+                    copy_group(s, f.require_group("series").create_group(src.stem, track_order=True))
+        fd = os.open(self.journal, os.O_WRONLY | os.O_TRUNC | os.O_CREAT | _NOFOLLOW, 0o644)   # all in the HDF5 file now
+        try:
+            os.fsync(fd)
+        finally:
+            os.close(fd)
 
     def finish(self, stats: np.ndarray | None, datasets: dict | None = None) -> Path:
         """Final write (with the statistics); removes the journal and the series folder."""

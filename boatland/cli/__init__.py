@@ -53,6 +53,7 @@ def main(argv: list[str] | None = None) -> int:
     # numba says this while compiling the kernel's gate (a sleep in object mode, by design): not for users
     warnings.filterwarnings("ignore", message="Code running in object mode won't allow parallel execution")
     warnings.showwarning = _one_line_warning
+    _no_kill_on_file_size()
     if not hasattr(args, "func"):
         parser.print_usage(sys.stderr)
         _error("no command given; start with 'boatland run', or see 'boatland --help'")
@@ -72,9 +73,29 @@ def main(argv: list[str] | None = None) -> int:
         _error("out of memory; shorten the run (simulation.duration) or split it into several runs")
         return 2
     except OSError as exc:              # the environment: unwritable path, disk full, ...
+        import errno
+
         where = f"{exc.filename}: " if exc.filename else ""
-        _error(f"{where}{exc.strerror or exc}")
+        what = exc.strerror or str(exc).splitlines()[0] if str(exc) else type(exc).__name__
+        if exc.errno in (errno.ENOSPC, errno.EFBIG, getattr(errno, "EDQUOT", -1)):
+            _error(f"no space left writing {exc.filename or 'an output'} ({what}); nothing else lost — its "
+                   "temporary file is removed, earlier outputs and finished campaign trials are kept")
+        else:
+            _error(f"{where}{what}")
         return 2
+
+
+def _no_kill_on_file_size() -> None:
+    """A file-size limit (``ulimit -f``) would kill the process with SIGXFSZ mid-write (and dump core):
+    ignored, a write past the limit fails with EFBIG instead, which the writer reports in one line and
+    cleans up after, like a full disk."""
+    import signal
+
+    if hasattr(signal, "SIGXFSZ"):
+        try:
+            signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+        except (OSError, ValueError):      # not the main thread (an embedding program): its own choice
+            pass
 
 
 def _one_line(exc: BoatlandInputError) -> str:

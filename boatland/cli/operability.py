@@ -35,8 +35,9 @@ def cmd(args) -> int:
     from boatland.freqdomain import availability, read_scatter
 
     freq_check(args)
-    if not args.scatter.is_file():
-        raise BoatlandInputError(f"{args.scatter}: no such file")
+    from boatland.inputs import check_input
+
+    check_input(args.scatter, "scatter table", "text")      # a FIFO or device refused before the model loads
     scenario, db = freq_load(args.scenario, (), args)
     setup = freq_setup(args, scenario, db)
     with warnings.catch_warnings(record=True) as caught:

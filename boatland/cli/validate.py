@@ -116,6 +116,9 @@ def cmd(args) -> int:
     say = (lambda m: print(m, file=sys.stderr, flush=True)) if args.json else (lambda m: print(m, flush=True))
     meta = machine()
     results = []
+    from boatland.cli.common import compile_notice
+
+    compile_notice()             # the first validation on a machine compiles the kernels inside its first trials
     t0 = time.perf_counter()
     with tempfile.TemporaryDirectory(prefix="boatland-validate-") as work:
         for k, case in enumerate(cases, 1):

@@ -100,10 +100,9 @@ def read_scatter(path: str | Path, *, default_direction_deg: float | None = None
         negative occurrences, nothing left.
     """
     path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise BoatlandInputError(f"{path}: cannot read the scatter table ({exc.strerror or exc})") from None
+    from boatland.inputs import read_input
+
+    text = read_input(path, "scatter table", "text").decode("utf-8")      # not UTF-8: the caller names the byte
     lines = [(i + 1, ln) for i, ln in enumerate(text.splitlines()) if ln.strip() and not ln.lstrip().startswith("#")]
     if not lines:
         raise BoatlandInputError(f"{path}: empty scatter table (need a header row Hs,Tp,direction_deg,occurrence)")

@@ -10,7 +10,8 @@ from pathlib import Path
 
 import numpy as np
 
-from boatland.errors import HydroDataError
+from boatland.errors import BoatlandInputError, HydroDataError
+from boatland.inputs import read_input
 from boatland.vessel.database import HydroDB
 
 __all__ = ["TextFile", "is_number", "find_sibling", "find_child", "normalise_directions", "build_db"]
@@ -37,7 +38,10 @@ class TextFile:
         self.what = what
         if not self.path.is_file():
             raise HydroDataError(self.path, None, f"file not found; expected the {what}")
-        raw = self.path.read_bytes()
+        try:
+            raw = read_input(self.path, what, "text")
+        except BoatlandInputError as exc:
+            raise HydroDataError(self.path, None, str(exc).removeprefix(f"{self.path}: ")) from None
         if b"\x00" in raw[:4096]:
             raise HydroDataError(self.path, None, f"a binary file, not the {what} (a text file)")
         self.lines = raw.decode("utf-8", errors="replace").splitlines()

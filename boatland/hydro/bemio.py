@@ -37,7 +37,7 @@ from pathlib import Path
 import numpy as np
 
 from boatland import __version__
-from boatland.atomic import atomic_path
+from boatland.atomic import atomic_hdf5
 from boatland.errors import HydroDataError
 from boatland.vessel.database import HullMesh, HydroDB, Provenance
 from boatland.vessel.radiation import padded_state_space, read_memory, write_memory
@@ -69,67 +69,65 @@ def write_bemio(db: HydroDB, path: str | Path) -> Path:
     path : str or Path
         Target file; replaced only when the whole file has been written.
     """
-    import h5py
 
     path = Path(path)
     rho, g, w = db.rho, db.g, db.omega
     col = lambda a: np.asarray(a, dtype=float).reshape(-1, 1)  # noqa: E731
     scalar = lambda v: np.array([[float(v)]])  # noqa: E731
-    with atomic_path(path) as tmp:
-        with h5py.File(tmp, "w") as f:
-            _store = _compressed_store(f)
-            f["bem_data/code"] = np.bytes_(db.provenance.solver or "unknown")
-            sp = f.create_group("simulation_parameters")
-            sp["g"] = scalar(g)
-            sp["rho"] = scalar(rho)
-            sp["w"] = col(w)
-            sp["T"] = col(2 * np.pi / w)
-            sp["water_depth"] = np.bytes_("infinite") if np.isinf(db.water_depth) else scalar(db.water_depth)
-            sp["wave_dir"] = col(db.wave_dir_deg)
-            sp["scaled"] = scalar(0)
-            pr = f.create_group("body1/properties")
-            pr["name"] = np.bytes_(db.name)
-            pr["cg"] = col(db.cog)
-            pr["cb"] = col(db.cob)
-            pr["disp_vol"] = scalar(db.disp_vol)
-            pr["body_number"] = scalar(1)
-            pr["dof"] = scalar(6)
-            pr["dof_start"] = scalar(1)
-            pr["dof_end"] = scalar(6)
-            hc = f.create_group(_HC)
-            hc["linear_restoring_stiffness"] = db.C / (rho * g)
-            _store(hc, "added_mass/all", db.A / rho)
-            if db.A_inf is not None:
-                hc["added_mass/inf_freq"] = db.A_inf / rho
-            _store(hc, "radiation_damping/all", db.B / (rho * w))
-            Xn = db.X / (rho * g)
-            for key, val in (("re", Xn.real), ("im", Xn.imag), ("mag", np.abs(Xn)), ("phase", np.angle(Xn))):
-                _store(hc, f"excitation/{key}", val)
-            ex = f.create_group(_EXTRA)
-            ex.attrs["name"] = db.name
-            ex.attrs["boatland_version"] = __version__
-            for key in ("source", "solver", "created", "reader"):
-                ex.attrs[f"provenance_{key}"] = getattr(db.provenance, key)
-            ex.attrs["provenance_notes"] = json.dumps(list(db.provenance.notes))
-            ex["ref_point"] = db.ref_point
-            ex["water_depth"] = db.water_depth
-            if db.M is not None:
-                ex["mass_matrix"] = db.M
-            if db.A_0 is not None:
-                ex["A0"] = db.A_0
-            exact = ex.create_group("exact")
-            for key, val in (("A", db.A), ("B", db.B), ("C", db.C), ("X_re", db.X.real), ("X_im", db.X.imag)):
-                _store(exact, key, val)
-            if db.A_inf is not None:
-                exact["A_inf"] = db.A_inf
-            if db.mesh is not None:
-                _store(ex, "mesh/vertices", db.mesh.vertices)
-                _store(ex, "mesh/faces", db.mesh.faces)
-            if db.topsides is not None:
-                _store(ex, "topsides/vertices", db.topsides.vertices)
-                _store(ex, "topsides/faces", db.topsides.faces)
-            if db.drift is not None:
-                _store(ex, "drift", db.drift)
+    with atomic_hdf5(path) as f:
+        _store = _compressed_store(f)
+        f["bem_data/code"] = np.bytes_(db.provenance.solver or "unknown")
+        sp = f.create_group("simulation_parameters")
+        sp["g"] = scalar(g)
+        sp["rho"] = scalar(rho)
+        sp["w"] = col(w)
+        sp["T"] = col(2 * np.pi / w)
+        sp["water_depth"] = np.bytes_("infinite") if np.isinf(db.water_depth) else scalar(db.water_depth)
+        sp["wave_dir"] = col(db.wave_dir_deg)
+        sp["scaled"] = scalar(0)
+        pr = f.create_group("body1/properties")
+        pr["name"] = np.bytes_(db.name)
+        pr["cg"] = col(db.cog)
+        pr["cb"] = col(db.cob)
+        pr["disp_vol"] = scalar(db.disp_vol)
+        pr["body_number"] = scalar(1)
+        pr["dof"] = scalar(6)
+        pr["dof_start"] = scalar(1)
+        pr["dof_end"] = scalar(6)
+        hc = f.create_group(_HC)
+        hc["linear_restoring_stiffness"] = db.C / (rho * g)
+        _store(hc, "added_mass/all", db.A / rho)
+        if db.A_inf is not None:
+            hc["added_mass/inf_freq"] = db.A_inf / rho
+        _store(hc, "radiation_damping/all", db.B / (rho * w))
+        Xn = db.X / (rho * g)
+        for key, val in (("re", Xn.real), ("im", Xn.imag), ("mag", np.abs(Xn)), ("phase", np.angle(Xn))):
+            _store(hc, f"excitation/{key}", val)
+        ex = f.create_group(_EXTRA)
+        ex.attrs["name"] = db.name
+        ex.attrs["boatland_version"] = __version__
+        for key in ("source", "solver", "created", "reader"):
+            ex.attrs[f"provenance_{key}"] = getattr(db.provenance, key)
+        ex.attrs["provenance_notes"] = json.dumps(list(db.provenance.notes))
+        ex["ref_point"] = db.ref_point
+        ex["water_depth"] = db.water_depth
+        if db.M is not None:
+            ex["mass_matrix"] = db.M
+        if db.A_0 is not None:
+            ex["A0"] = db.A_0
+        exact = ex.create_group("exact")
+        for key, val in (("A", db.A), ("B", db.B), ("C", db.C), ("X_re", db.X.real), ("X_im", db.X.imag)):
+            _store(exact, key, val)
+        if db.A_inf is not None:
+            exact["A_inf"] = db.A_inf
+        if db.mesh is not None:
+            _store(ex, "mesh/vertices", db.mesh.vertices)
+            _store(ex, "mesh/faces", db.mesh.faces)
+        if db.topsides is not None:
+            _store(ex, "topsides/vertices", db.topsides.vertices)
+            _store(ex, "topsides/faces", db.topsides.faces)
+        if db.drift is not None:
+            _store(ex, "drift", db.drift)
     return path
 
 
@@ -319,27 +317,23 @@ def write_drift(path: str | Path, db: HydroDB) -> Path:
     HydroDataError
         ``db`` has no drift, or the file holds another grid of frequencies or directions.
     """
-    import shutil
 
-    import h5py
 
     path = Path(path)
     if db.drift is None:
         raise HydroDataError(path, "drift", "the database has no mean drift to store")
-    with atomic_path(path) as tmp:
-        shutil.copyfile(path, tmp)
-        with h5py.File(tmp, "r+") as f:
-            w = np.asarray(f["simulation_parameters/w"][()], dtype=float).reshape(-1)
-            beta = np.asarray(f["simulation_parameters/wave_dir"][()], dtype=float).reshape(-1)
-            if w.shape != db.omega.shape or not np.allclose(w, db.omega, rtol=1e-12, atol=0) \
-                    or beta.shape != db.wave_dir_deg.shape or not np.allclose(beta, db.wave_dir_deg, rtol=0, atol=1e-9):
-                raise HydroDataError(path, "/simulation_parameters", "the file's frequencies or directions are not "
-                                                                     "the database's: write the whole database instead")
-            ex = f.require_group(_EXTRA)
-            if "drift" in ex:
-                del ex["drift"]
-            _compressed_store(f)(ex, "drift", db.drift)
-            ex.attrs["provenance_notes"] = json.dumps(list(db.provenance.notes))
+    with atomic_hdf5(path, "r+") as f:
+        w = np.asarray(f["simulation_parameters/w"][()], dtype=float).reshape(-1)
+        beta = np.asarray(f["simulation_parameters/wave_dir"][()], dtype=float).reshape(-1)
+        if w.shape != db.omega.shape or not np.allclose(w, db.omega, rtol=1e-12, atol=0) \
+                or beta.shape != db.wave_dir_deg.shape or not np.allclose(beta, db.wave_dir_deg, rtol=0, atol=1e-9):
+            raise HydroDataError(path, "/simulation_parameters", "the file's frequencies or directions are not "
+                                                                 "the database's: write the whole database instead")
+        ex = f.require_group(_EXTRA)
+        if "drift" in ex:
+            del ex["drift"]
+        _compressed_store(f)(ex, "drift", db.drift)
+        ex.attrs["provenance_notes"] = json.dumps(list(db.provenance.notes))
     return path
 
 
@@ -356,28 +350,24 @@ def write_radiation(path: str | Path, memory, rho: float) -> Path:
     ``state_space/{A,B,C,D}/all, it, r2t`` (C and D divided by ρ, orders padded to the largest).
     Exact values, settings, checks and notes under ``/body1/boatland/irf``.
     """
-    import shutil
 
-    import h5py
 
     path = Path(path)
     irf, ss = memory.irf, memory.state_space
-    with atomic_path(path) as tmp:
-        shutil.copyfile(path, tmp)
-        with h5py.File(tmp, "r+") as f:
-            for grp in (_IRF, _SS, _XIRF):
-                if grp in f:
-                    del f[grp]
-            f[f"{_IRF}/K"] = irf.K / rho
-            f[f"{_IRF}/t"] = irf.t.reshape(-1, 1)
-            f[f"{_IRF}/w"] = np.asarray(irf.check_band, dtype=float).reshape(-1, 1)
-            write_memory(f.create_group(_XIRF), memory)
-            if ss is not None:
-                A, B, C = padded_state_space(ss)
-                f[f"{_SS}/A/all"], f[f"{_SS}/B/all"], f[f"{_SS}/C/all"] = A, B, C / rho
-                f[f"{_SS}/D/all"] = np.zeros((6, 6))
-                f[f"{_SS}/it"] = ss.orders.astype(float)
-                f[f"{_SS}/r2t"] = np.nan_to_num(ss.r2, nan=0.0)
+    with atomic_hdf5(path, "r+") as f:
+        for grp in (_IRF, _SS, _XIRF):
+            if grp in f:
+                del f[grp]
+        f[f"{_IRF}/K"] = irf.K / rho
+        f[f"{_IRF}/t"] = irf.t.reshape(-1, 1)
+        f[f"{_IRF}/w"] = np.asarray(irf.check_band, dtype=float).reshape(-1, 1)
+        write_memory(f.create_group(_XIRF), memory)
+        if ss is not None:
+            A, B, C = padded_state_space(ss)
+            f[f"{_SS}/A/all"], f[f"{_SS}/B/all"], f[f"{_SS}/C/all"] = A, B, C / rho
+            f[f"{_SS}/D/all"] = np.zeros((6, 6))
+            f[f"{_SS}/it"] = ss.orders.astype(float)
+            f[f"{_SS}/r2t"] = np.nan_to_num(ss.r2, nan=0.0)
     return path
 
 

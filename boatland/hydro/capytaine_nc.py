@@ -22,7 +22,8 @@ from pathlib import Path
 import numpy as np
 
 from boatland.conventions import DOF_NAMES
-from boatland.errors import HydroDataError
+from boatland.errors import BoatlandInputError, HydroDataError
+from boatland.inputs import open_input
 from boatland.hydro._text import build_db, normalise_directions
 from boatland.vessel.database import HydroDB, Provenance
 
@@ -62,8 +63,11 @@ def read_capytaine(path: str | Path, *, ref_point=None) -> HydroDB:
     path = Path(path)
     if not path.is_file():
         raise HydroDataError(path, None, "file not found; expected a Capytaine NetCDF dataset (.nc)")
-    with path.open("rb") as fh:
-        magic = fh.read(4)
+    try:
+        with open_input(path, "Capytaine NetCDF dataset", "hdf5") as fh:
+            magic = fh.read(4)
+    except BoatlandInputError as exc:
+        raise HydroDataError(path, None, str(exc).removeprefix(f"{path}: ")) from None
     # Classic NetCDF (CDF1/CDF2) through scipy: the netCDF-C library reads a truncated classic file
     # without complaint (missing data come back as fill values); scipy's reader refuses it.
     engine = "scipy" if magic in (b"CDF\x01", b"CDF\x02") else None

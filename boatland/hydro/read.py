@@ -14,6 +14,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from boatland.errors import BoatlandInputError, HydroDataError
+from boatland.inputs import open_input
 from boatland.hydro.bemio import read_bemio
 from boatland.hydro.builtin import BUILTIN, load_builtin
 from boatland.vessel.database import HydroDB
@@ -51,8 +52,11 @@ def detect_format(path: str | Path) -> str:
                                          "Results/RadiationCoefficients.tec); expected one of: "
                              + "; ".join(FORMATS.values()))
     suffix = path.suffix.lower()
-    with path.open("rb") as fh:
-        head = fh.read(8)
+    try:
+        with open_input(path, "hydrodynamic database", "hdf5") as fh:
+            head = fh.read(8)
+    except BoatlandInputError as exc:
+        raise HydroDataError(path, None, str(exc).removeprefix(f"{path}: ")) from None
     if head.startswith(b"\x89HDF"):
         return "capytaine" if suffix == ".nc" else "bemio"
     if head.startswith(b"CDF"):

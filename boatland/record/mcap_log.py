@@ -302,6 +302,13 @@ class McapLog:
         self._log_cls = message_class("foxglove.Log")
         self._layout = _Layout(nc)
         self._seq = 0
+        try:
+            self._begin()
+        except OSError as exc:
+            self._abandon(exc)
+
+    def _begin(self) -> None:
+        """The file's start: header, schemas, channels, metadata and the static scene, flushed."""
         w = self._writer = Writer(self._f, chunk_size=1 << 62, compression=_COMPRESSION[self.compression],
                                   enable_crcs=True, enable_data_crcs=True)
         w.start(profile=PROFILE, library=LIBRARY)
@@ -310,7 +317,7 @@ class McapLog:
         self._ids = {topic: w.register_channel(topic, "protobuf", schema_ids[name]) for topic, name in TOPICS.items()}
         self._spans = [(self._ids[topic], a, b) for topic, (a, b) in self._layout.spans.items()]
         stamp = datetime.fromtimestamp(self.epoch // NS, timezone.utc).isoformat()
-        w.add_metadata(METADATA_NAME, {k: str(v) for k, v in (run_metadata(info) | {
+        w.add_metadata(METADATA_NAME, {k: str(v) for k, v in (run_metadata(self.info) | {
             "run_id": self.run_id, "log_format": LOG_FORMAT, "start_time_ns": self.epoch, "start_time": stamp,
         }).items()})
         # the first chunk: schemas, channels and the static scene, on disk before the kernel starts
@@ -318,6 +325,24 @@ class McapLog:
         w.flush()
 
     def steps(self, block) -> None:
+        try:
+            self._steps(block)
+        except OSError as exc:
+            self._abandon(exc)
+
+    def _abandon(self, exc: OSError):
+        """A write failed (a full disk, a file-size limit): close and remove the partial log — a log that
+        ends mid-block is not left under its name — and raise the error naming it."""
+        try:
+            if self._f is not None:
+                self._f.close()
+        except OSError:
+            pass
+        self._writer = self._f = None
+        self.path.unlink(missing_ok=True)
+        raise OSError(exc.errno, exc.strerror, str(self.path)) from None
+
+    def _steps(self, block) -> None:
         slip = np.empty(block.mode.shape)
         track_landing(block.mode, block.tpos, self._anchor, slip, max(0, settle_row(self.info) - block.k0))
         t_ns = np.rint(np.asarray(block.t) * NS).astype(np.int64) + self.epoch
@@ -336,15 +361,21 @@ class McapLog:
     def finish(self, result) -> None:
         if self._writer is None:
             return
-        self._events([end_event(result)])
-        self._writer.flush()
-        self._writer.add_metadata(SUMMARY_NAME, {"summary": json.dumps(result.summary(), default=float)})
-        self._close()
+        try:
+            self._events([end_event(result)])
+            self._writer.flush()
+            self._writer.add_metadata(SUMMARY_NAME, {"summary": json.dumps(result.summary(), default=float)})
+            self._close()
+        except OSError as exc:
+            self._abandon(exc)
 
     def close(self) -> None:
         """Finish the file without a result (e.g. after an error elsewhere): still a valid MCAP."""
         if self._writer is not None:
-            self._close()
+            try:
+                self._close()
+            except OSError as exc:
+                self._abandon(exc)
 
     # --------------------------------------------------------------------------------- writing
     def _events(self, events) -> None:

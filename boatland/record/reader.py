@@ -19,6 +19,7 @@ from pathlib import Path
 import numpy as np
 
 from boatland.errors import BoatlandInputError
+from boatland.inputs import open_input
 from boatland.record.columns import Columns
 from boatland.record.schemas import ANGLE_FIELDS, CONTACT_FIELDS, LOG_LEVEL, RAD2DEG, TOPICS, VESSEL_LOADS_FIELDS, \
     VESSEL_STATE_FIELDS, message_class
@@ -80,7 +81,7 @@ def _records(path: Path):
     from mcap.stream_reader import StreamReader
     from zstandard import ZstdError as zstd_error
 
-    with open(path, "rb") as f:
+    with open_input(path, "run log", "mcap") as f:
         reader = StreamReader(f, skip_magic=False, emit_chunks=False, validate_crcs=True)
         try:
             for rec in reader.records:
@@ -100,11 +101,8 @@ def read_run_log(path: str | Path) -> RunLog:
     from mcap.records import Channel, Footer, Header, Message, Metadata, Schema
 
     path = Path(path)
-    try:
-        with open(path, "rb") as f:
-            head = f.read(8)
-    except OSError as exc:
-        raise BoatlandInputError(f"{path}: cannot read: {exc.strerror}") from None
+    with open_input(path, "run log", "mcap") as f:
+        head = f.read(8)
     if head != MAGIC:
         raise BoatlandInputError(f"{path}: not an MCAP file (it does not start with the MCAP magic bytes)")
     header, schemas, channels, meta, data = None, {}, {}, {}, {}

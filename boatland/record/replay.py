@@ -56,15 +56,21 @@ def replay(path: str | Path, target: str, *, quiet: bool = False, bind: str = DE
     log = read_run_log(path)
     nc = log.columns.mode.shape[1]
     scene = scene_from_metadata(log.metadata)
-    rec, kind, where = open_stream(target, recording_id=log.metadata.get("run_id") or None, n_contacts=nc, quiet=quiet,
-                                   bind=bind, port=port, scene=scene)
+    rec, kind, where, file = open_stream(target, recording_id=log.metadata.get("run_id") or None, n_contacts=nc,
+                                         quiet=quiet, bind=bind, port=port, scene=scene)
     view = RerunView(rec, scene, nc)
     view.static()
     view.columns(log.columns)
     view.events([(round(t * NS), level, text) for t, level, text in log.events])
-    rec.flush()
-    if kind in ("save", "spawn", "connect"):
-        rec.disconnect()
+    try:
+        rec.flush()
+        if kind in ("save", "spawn", "connect"):
+            rec.disconnect()
+        if file is not None:
+            file.close()           # complete, or an OSError naming it (nothing left under its name)
+    finally:
+        if file is not None:
+            file.abandon()
     moment = key_moment(log.columns, waves_from(log.metadata))
     shown = kind in ("spawn", "connect") and show_moment(where, moment[0])
     return Replayed(log, rec, kind, where, list(log.notes) + list(scene.notes), moment, shown)

@@ -20,6 +20,7 @@ import os
 import socket
 import sys
 import uuid
+from pathlib import Path
 from urllib.parse import urlparse
 
 import numpy as np
@@ -278,15 +279,16 @@ def open_stream(target: str, *, recording_id: str | None = None, n_contacts: int
     ``bind``, ``port``: where a ``serve`` target, or the viewer ``spawn`` starts, listens (default
     127.0.0.1:9876: this machine only).
 
-    Returns (stream, kind, uri-or-path)."""
+    Returns (stream, kind, uri-or-path, file): ``file`` the :class:`RrdFile` of a ``save`` target (None for
+    the others)."""
     import rerun as rr
 
     kind, arg = check_target(target, bind=bind, port=port)
     rec = rr.RecordingStream(APPLICATION_ID, recording_id=recording_id or str(uuid.uuid4()))
     bp = blueprint(n_contacts, scene)
-    where = arg
+    where, file = arg, None
     if kind == "save":
-        rec.save(arg, default_blueprint=bp)
+        file = RrdFile(rec, arg)
     elif kind == "serve":
         _warn_if_open(bind, port, "serving")
         sink = rr.GrpcServerSink(bind_ip=bind, port=port)
@@ -306,7 +308,67 @@ def open_stream(target: str, *, recording_id: str | None = None, n_contacts: int
     # active too: a viewer keeps the layout it last showed for the application (persisted on disk), which
     # would hide a newer boatland's layout; the user's own changes last until the next run or replay
     rec.send_blueprint(bp, make_active=True, make_default=True)
-    return rec, kind, where
+    return rec, kind, where, file
+
+
+class RrdFile:
+    """A ``.rrd`` recording written from the stream's bytes (Rerun's ``binary_stream``, held in memory until
+    :meth:`close`: each read of it is a whole recording with its own footer, so it is read once) by Python
+    into a temporary file beside it, renamed onto its name when complete.
+
+    Rerun's own file sink logs a failed write and carries on, so a full disk or a file-size limit would
+    leave a truncated recording under its name and a run that says "wrote"; here such a failure is an
+    ``OSError`` naming the file (:meth:`drain`, :meth:`close`), and nothing is left under its name.
+    """
+
+    def __init__(self, rec, path: str | os.PathLike):
+        import tempfile
+
+        self.path = Path(path)
+        self.stream = rec.binary_stream()
+        fd, tmp = tempfile.mkstemp(prefix=f".{self.path.name}.", suffix=".part", dir=self.path.parent)
+        self.tmp, self.fh = Path(tmp), os.fdopen(fd, "wb")
+
+    def drain(self) -> None:
+        """Write what the stream holds (once, at the end: :meth:`close`)."""
+        try:
+            data = self.stream.read()
+            if data:
+                self.fh.write(data)
+        except OSError as exc:
+            self.abandon()
+            raise OSError(exc.errno, exc.strerror, str(self.path)) from None
+
+    def close(self) -> None:
+        """The rest of the stream, flushed to the disk, renamed onto the file's name."""
+        from boatland.atomic import fsync_path
+
+        if self.fh is None:
+            return
+        self.drain()
+        try:
+            self.fh.flush()
+            os.fsync(self.fh.fileno())
+            self.fh.close()
+            self.fh = None
+            umask = os.umask(0)
+            os.umask(umask)
+            os.chmod(self.tmp, 0o666 & ~umask)
+            os.replace(self.tmp, self.path)
+            fsync_path(self.path.parent)
+        except OSError as exc:
+            self.abandon()
+            raise OSError(exc.errno, exc.strerror, str(self.path)) from None
+
+    def abandon(self) -> None:
+        """Drop the temporary file (after a failure, or when the run stops early)."""
+        if self.fh is not None:
+            try:
+                self.fh.close()
+            except OSError:
+                pass
+            self.fh = None
+        self.tmp.unlink(missing_ok=True)
 
 
 def _proxy_url(bind: str, port: int) -> str:
@@ -466,14 +528,15 @@ class RerunLog:
                  bind: str = DEFAULT_BIND, port: int = DEFAULT_PORT):
         check_target(target, bind=bind, port=port)   # a bad spec, an absent viewer, a busy port: fail now
         self.target, self.recording_id, self.quiet, self.bind, self.port = target, recording_id, quiet, bind, port
-        self.rec, self.kind, self.where, self._closed = None, None, None, False
+        self.rec, self.kind, self.where, self.file, self._closed = None, None, None, None, False
 
     def start(self, info) -> None:
         self.info = info
         nc = np.asarray(info.contacts[0]).reshape(-1, 3).shape[0]
         scene = scene_from_trial(info.setup, info.contacts)
-        self.rec, self.kind, self.where = open_stream(self.target, recording_id=self.recording_id, n_contacts=nc,
-                                                      quiet=self.quiet, bind=self.bind, port=self.port, scene=scene)
+        self.rec, self.kind, self.where, self.file = open_stream(
+            self.target, recording_id=self.recording_id, n_contacts=nc, quiet=self.quiet, bind=self.bind,
+            port=self.port, scene=scene)
         self.view = RerunView(self.rec, scene, nc)
         self.view.static()
         self._tracker = LandingTracker(nc, settle_row(info))
@@ -510,6 +573,8 @@ class RerunLog:
             print(f"warning: rerun: {exc}", file=sys.stderr)
         if self.kind in ("save", "connect", "spawn"):
             self.rec.disconnect()
+        if self.file is not None:
+            self.file.close()
 
 
 def serve_until_interrupted(where: str) -> None:

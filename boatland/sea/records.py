@@ -42,10 +42,11 @@ def read_elevation_csv(path, column: int = 1, rtol: float = 0.01) -> tuple[np.nd
         columns, non-increasing or non-uniform time, gaps (missing samples), fewer than 4 samples.
     """
     path = Path(path)
+    from boatland.inputs import read_input
+
+    raw = read_input(path, "wave record", "text")
     try:
-        text = path.read_text(encoding="utf-8-sig")
-    except OSError as exc:
-        raise BoatlandInputError(f"{path}: cannot read the wave record: {exc.strerror or exc}") from None
+        text = raw.decode("utf-8-sig")
     except UnicodeDecodeError:
         raise BoatlandInputError(f"{path}: not a text (UTF-8) file; "
                                  "expected a CSV of time [s], elevation [m]") from None

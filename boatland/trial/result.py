@@ -8,7 +8,7 @@ from pathlib import Path
 
 import numpy as np
 
-from boatland.atomic import atomic_path
+from boatland.atomic import atomic_hdf5
 from boatland.conventions import DOF_NAMES, DOF_UNITS
 from boatland.scenario.parts import Incidents
 from boatland.trial.incidents import FirstSlip, trial_incidents
@@ -349,14 +349,12 @@ class Result(TrialSeries):
         """Write the dataset of :meth:`to_xarray` as netCDF-4/HDF5 (``xarray.open_dataset(path)`` opens it with
         its dimensions and units; h5py reads it as plain HDF5), atomically (nothing half-written). Needs
         h5py only — not xarray."""
-        import h5py
 
         from boatland.netcdf_h5 import write_parts
         from boatland.trial.dataset import result_parts
 
         path = Path(path)
         var, coords, attrs = result_parts(self)
-        with atomic_path(path) as tmp:
-            with h5py.File(tmp, "w", track_order=True) as f:
-                write_parts(f, var, coords, attrs)
+        with atomic_hdf5(path, track_order=True) as f:
+            write_parts(f, var, coords, attrs)
         return path

@@ -101,6 +101,41 @@ def test_a_real_dask_cluster_gives_the_same_store(reference, tmp_path, dask_clus
 
 
 @pytest.mark.slow
+def test_a_lost_dask_worker_costs_no_trial(reference, tmp_path, dask_cluster):
+    """One of the two Dask worker processes SIGKILLed mid-campaign (its nanny starts another), five times: every
+    campaign finishes without a word of the loss, and its store equals the uninterrupted one bit for bit."""
+    import os
+    import signal
+
+    from distributed import Client
+
+    camp, one = reference
+    rng = np.random.default_rng(7)
+    with Client(dask_cluster, timeout=30, set_as_default=False) as client:
+        for k in range(5):
+            store = tmp_path / f"lost_{k}.h5"
+            journal = store.with_name(store.name + ".journal")
+            p = subprocess.Popen([sys.executable, "-m", "boatland", "campaign", str(camp), "-o", str(store),
+                                  "--scheduler", dask_cluster], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+            target = int(rng.integers(1, 7))              # trials on disk before the kill
+            deadline = time.monotonic() + 120
+            while p.poll() is None and time.monotonic() < deadline and \
+                    (sum(1 for _ in open(journal)) if journal.exists() else 0) < target:
+                time.sleep(0.01)
+            pids = sorted(w["pid"] for w in client.scheduler_info()["workers"].values())
+            killed = p.poll() is None
+            if killed:
+                os.kill(pids[int(rng.integers(len(pids)))], signal.SIGKILL)
+            out, err = p.communicate(timeout=600)
+            assert p.returncode == 0 and "Traceback" not in err, err
+            same(summaries(one), summaries(store))
+            assert killed, "the campaign ended before the kill: nothing was tested"
+            deadline = time.monotonic() + 60                # the nanny's new worker joins before the next round
+            while len(client.scheduler_info()["workers"]) < 2 and time.monotonic() < deadline:
+                time.sleep(0.2)
+
+
+@pytest.mark.slow
 def test_unreachable_scheduler_is_a_clear_error(reference, unused_port):
     camp, _ = reference
     t0 = time.monotonic()

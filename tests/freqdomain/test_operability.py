@@ -104,5 +104,5 @@ def test_bad_scatter_tables(tmp_path, text, match):
 
 
 def test_missing_file(tmp_path):
-    with pytest.raises(BoatlandInputError, match="cannot read"):
+    with pytest.raises(BoatlandInputError, match="no such file \\(the scatter table\\)"):
         read_scatter(tmp_path / "nope.csv")

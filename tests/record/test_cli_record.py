@@ -84,7 +84,7 @@ def test_bad_input_is_one_line_exit_2(tmp_path, capsys, command, kind):
     err = capsys.readouterr().err.strip()
     assert err.startswith(f"boatland: error: {path}") and "\n" not in err and "Traceback" not in err
     expected = {"text": "not an MCAP file", "foreign": "not a boatland run log", "empty": "nothing to recover",
-                "missing": "cannot read"}[kind]
+                "missing": "no such file"}[kind]
     assert expected in err
 
 
