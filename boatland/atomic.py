@@ -9,7 +9,23 @@ import tempfile
 from pathlib import Path
 from typing import Iterator
 
-__all__ = ["atomic_path", "atomic_hdf5", "fsync_path", "stale_parts", "remove_stale_parts"]
+__all__ = ["atomic_path", "atomic_hdf5", "fsync_path", "stale_parts", "remove_stale_parts", "CHECKSUM_MAGIC",
+           "USERBLOCK", "hdf5_checksum"]
+
+#: HDF5 files boatland writes start with a 512-byte user block (which HDF5 and every netCDF/HDF5 reader skip)
+#: holding this tag and the SHA-256 of the rest of the file: a reader finds damage (a flipped byte, a
+#: truncation) before the HDF5 library parses it — a damaged file can crash that library, not just fail.
+CHECKSUM_MAGIC = b"boatland-sha256:"
+USERBLOCK = 512
+
+
+def hdf5_checksum(image) -> bytes:
+    """The user block of an HDF5 file image written with a 512-byte user block: the tag, the SHA-256 of
+    everything after the block (hex), zero padding."""
+    import hashlib
+
+    head = CHECKSUM_MAGIC + hashlib.sha256(memoryview(image)[USERBLOCK:]).hexdigest().encode() + b"\n"
+    return head + bytes(USERBLOCK - len(head))
 
 
 def fsync_path(path: str | os.PathLike) -> None:
@@ -89,7 +105,8 @@ def atomic_hdf5(target: str | os.PathLike, mode: str = "w", **file_kwargs):
     ``OSError`` of the final Python write, with nothing left behind — where HDF5's own I/O failing mid-file
     leaves the library in a state that can crash the process as it exits. ``mode`` ``"w"`` starts empty;
     ``"r+"`` starts from ``target``'s contents (to change an existing file). The whole file is in memory
-    while it is made.
+    while it is made. A file with a 512-byte user block (every new one) carries its checksum there
+    (:func:`hdf5_checksum`; checked by :func:`boatland.inputs.open_hdf5`).
     """
     import io
 
@@ -102,9 +119,14 @@ def atomic_hdf5(target: str | os.PathLike, mode: str = "w", **file_kwargs):
     if mode == "r+":
         with open(target, "rb") as fh:
             buffer.write(fh.read())
+    else:
+        file_kwargs.setdefault("userblock_size", USERBLOCK)
     with h5py.File(buffer, mode, **file_kwargs) as f:
+        block = f.userblock_size
         yield f
     image = buffer.getbuffer()
+    if block == USERBLOCK:                         # ours (or a file made so): its checksum in the user block
+        image[:USERBLOCK] = hdf5_checksum(image)
     with atomic_path(target) as tmp:
         with open(tmp, "wb") as fh:
             fh.write(image)

@@ -18,7 +18,7 @@ from typing import BinaryIO
 
 from boatland.errors import BoatlandInputError
 
-__all__ = ["LIMITS", "open_input", "read_input", "check_input", "read_text_input"]
+__all__ = ["LIMITS", "open_input", "read_input", "check_input", "read_text_input", "open_hdf5"]
 
 _MiB = 1 << 20
 #: Largest file [bytes] accepted per kind of input. Assumptions, not measurements of any standard: a
@@ -85,8 +85,15 @@ def check_input(path: str | os.PathLike, what: str, kind: str) -> None:
 def read_input(path: str | os.PathLike, what: str, kind: str) -> bytes:
     """The bytes of the input ``path`` (:func:`open_input`; read once, at most the limit even if the file
     grows while it is read)."""
+    parts, size = [], 0
     with open_input(path, what, kind) as fh:
-        data = fh.read(LIMITS[kind] + 1)
+        while size <= LIMITS[kind]:
+            part = fh.read(16 * _MiB)
+            if not part:
+                break
+            parts.append(part)
+            size += len(part)
+    data = b"".join(parts)
     if len(data) > LIMITS[kind]:
         raise BoatlandInputError(f"{path}: grew past {LIMITS[kind] / _MiB:,.0f} MiB while read; not a {what}")
     return data
@@ -106,3 +113,36 @@ def read_text_input(path: str | os.PathLike, what: str, kind: str = "text", enco
     except UnicodeDecodeError as exc:
         raise BoatlandInputError(f"{path}: not a text file (byte {exc.start} is not {encoding.upper()}); "
                                  f"expected the {what}") from None
+
+
+def open_hdf5(path: str | os.PathLike, what: str):
+    """An HDF5 input opened from its bytes, read once (:func:`read_input`), as an ``h5py.File`` (read only).
+
+    A file boatland wrote carries the SHA-256 of its contents in its user block
+    (:func:`boatland.atomic.hdf5_checksum`): it is checked first, so that a damaged file (a flipped byte, a
+    truncation) is refused in one line before the HDF5 library — which a damaged file can crash — parses it.
+    Other HDF5 files are opened as they are.
+
+    Raises
+    ------
+    BoatlandInputError
+        As :func:`read_input`; the checksum does not match; not an HDF5 file.
+    """
+    import hashlib
+    import io
+
+    import h5py
+
+    from boatland.atomic import CHECKSUM_MAGIC, USERBLOCK
+
+    data = read_input(path, what, "hdf5")
+    if data.startswith(CHECKSUM_MAGIC):
+        stored = data[len(CHECKSUM_MAGIC):len(CHECKSUM_MAGIC) + 64]
+        if len(data) <= USERBLOCK or hashlib.sha256(memoryview(data)[USERBLOCK:]).hexdigest().encode() != stored:
+            raise BoatlandInputError(f"{path}: damaged — its contents do not match the checksum boatland wrote with "
+                                     f"it (changed or cut short since); not a usable {what}")
+    try:
+        return h5py.File(io.BytesIO(data), "r")
+    except OSError as exc:
+        raise BoatlandInputError(f"{path}: not a readable HDF5 file ({str(exc).splitlines()[0]}); expected the "
+                                 f"{what}") from None

@@ -46,6 +46,8 @@ class Shared(NamedTuple):
 
 #: How often a task lost with a Dask worker (killed, disconnected) is sent again before the campaign stops.
 LOST_RETRIES = 3
+#: Seconds a scatter of a shared value may take before it is tried again (a worker lost mid-transfer).
+SCATTER_TIMEOUT = 60.0
 _RESENT = object()
 
 
@@ -54,7 +56,8 @@ def _lost_with_worker(exc: BaseException) -> bool:
     not in its own code (a trial's own errors are rows, never exceptions)."""
     import concurrent.futures
 
-    names = {"KilledWorker", "FutureCancelledError", "CancelledError", "CommClosedError", "StreamClosedError"}
+    names = {"KilledWorker", "FutureCancelledError", "CancelledError", "CommClosedError", "StreamClosedError",
+             "TimeoutError"}
     return isinstance(exc, (concurrent.futures.CancelledError, ConnectionError)) or type(exc).__name__ in names
 
 
@@ -233,13 +236,23 @@ class Executor:
         def ship(a):
             if not isinstance(a, Shared):
                 return a
-            if a.key not in self._scattered:      # each shared value scattered once (a list too: as one), to every
-                # worker: one worker lost does not lose it (the rest hold it; a restarted worker fetches it)
-                self._scattered[a.key] = None if a.value is None else \
-                    self._client.scatter([a.value], hash=False, broadcast=True)[0]
+            if a.key not in self._scattered:      # each shared value scattered once (a list too: as one); lost
+                # with its worker, the tasks needing it fail and are sent again with it scattered anew (map)
+                self._scattered[a.key] = None if a.value is None else self._scatter(a.value)
             return self._scattered[a.key]
 
         return self._client.submit(fn, *(ship(a) for a in args), pure=False)
+
+    def _scatter(self, value):
+        """``value`` to a Dask worker (a worker lost meanwhile — its connection closing, no answer within
+        :data:`SCATTER_TIMEOUT` s — is tried again after a pause, :data:`LOST_RETRIES` times)."""
+        for attempt in range(LOST_RETRIES + 1):
+            try:
+                return self._client.scatter([value], hash=False, timeout=SCATTER_TIMEOUT)[0]
+            except Exception as exc:  # noqa: BLE001 - only the cluster's own failures are retried
+                if not _lost_with_worker(exc) or attempt == LOST_RETRIES:
+                    raise
+                time.sleep(1.0)
 
     def _cancel(self, futures) -> None:
         if self._client is not None:

@@ -62,7 +62,7 @@ from boatland.campaign.labels import (
 from boatland.campaign.runner import completed
 from boatland.campaign.store import FORMAT, INCIDENT_PREFIX
 from boatland.errors import BoatlandInputError
-from boatland.inputs import check_input
+from boatland.inputs import open_hdf5
 from boatland.freqdomain.statistics import DEFAULT_STATISTICS
 from boatland.trial.incidents import SlipDistance, parse_incident
 
@@ -94,9 +94,9 @@ def read_store(path: str | Path) -> dict:
     import h5py
 
     path = Path(path)
-    check_input(path, "campaign store", "hdf5")
+    store = open_hdf5(path, "campaign store")     # read once, checked: refused here when damaged or not HDF5
     try:
-        with h5py.File(path, "r") as f:
+        with store as f:
             if f.attrs.get("format") != FORMAT:
                 raise BoatlandInputError(f"{path}: not a boatland campaign store")
             header = {k: (v.decode() if isinstance(v, bytes) else v) for k, v in f.attrs.items()}
@@ -107,8 +107,13 @@ def read_store(path: str | Path) -> dict:
             stats = f["stats"][()] if "stats" in f else None
             limits = f["isee_limits"][()] if "isee_limits" in f else None
             sens = f["sensitivity"][()] if "sensitivity" in f else None
+    except BoatlandInputError:
+        raise
     except OSError as exc:
-        raise BoatlandInputError(f"{path}: not a readable HDF5 file ({exc})") from None
+        raise BoatlandInputError(f"{path}: not a readable HDF5 file ({str(exc).splitlines()[0]})") from None
+    except (KeyError, ValueError, TypeError, RuntimeError) as exc:    # h5py meeting damage inside the file
+        raise BoatlandInputError(f"{path}: a damaged campaign store ({type(exc).__name__}: "
+                                 f"{str(exc).splitlines()[0] if str(exc) else ''})") from None
     if stats is None:
         raise BoatlandInputError(f"{path}: the campaign has not finished (no statistics yet); run it again to resume")
     if trials.size == 0 or stats.size == 0:
@@ -122,7 +127,7 @@ def read_store(path: str | Path) -> dict:
     if limits is not None:
         out["isee_limits"] = limits
     if sens is not None:     # what moves the base's limit (boatland.campaign.prepare.case_sensitivity), JSON
-        out["sensitivity"] = sens.decode() if isinstance(sens, bytes) else str(sens)
+        out["sensitivity"] = sens.decode(errors="replace") if isinstance(sens, bytes) else str(sens)
     return out
 
 

@@ -44,6 +44,7 @@ import numpy as np
 
 from boatland import __version__
 from boatland.atomic import atomic_hdf5, remove_stale_parts
+from boatland.inputs import open_hdf5
 from boatland.errors import BoatlandInputError
 
 __all__ = ["CampaignStore", "StoreLock", "ROW_FIELDS", "FORMAT"]
@@ -210,17 +211,20 @@ class CampaignStore:
     def _open_locked(cls, path, header, incident_names, rows, lock, extra_fields=()) -> "CampaignStore":
         remove_stale_parts(path)      # left by a rewrite that was killed (only we can be writing now)
         if path.exists():
-            import h5py
 
             try:
-                with h5py.File(path, "r") as f:
+                with open_hdf5(path, "campaign store") as f:
                     fmt = f.attrs.get("format")
                     digest = f.attrs.get("campaign_digest")
                     name = f.attrs.get("campaign")
                     theirs = f.attrs.get("input_digests")
                     data = f["trials"][()] if "trials" in f else None
-            except OSError as exc:
-                raise BoatlandInputError(f"{path}: not a readable HDF5 campaign store ({exc})") from None
+            except BoatlandInputError:
+                raise
+            except (OSError, KeyError, ValueError, TypeError, RuntimeError) as exc:   # damage inside the file
+                raise BoatlandInputError(f"{path}: not a readable campaign store ({type(exc).__name__}: "
+                                         f"{str(exc).splitlines()[0] if str(exc) else ''}); choose another output "
+                                         "file") from None
             if fmt != FORMAT:
                 raise BoatlandInputError(f"{path}: not a boatland campaign store (format {fmt!r}); "
                                          "choose another output file")

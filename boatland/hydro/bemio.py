@@ -38,7 +38,8 @@ import numpy as np
 
 from boatland import __version__
 from boatland.atomic import atomic_hdf5
-from boatland.errors import HydroDataError
+from boatland.errors import BoatlandInputError, HydroDataError
+from boatland.inputs import open_hdf5
 from boatland.vessel.database import HullMesh, HydroDB, Provenance
 from boatland.vessel.radiation import padded_state_space, read_memory, write_memory
 
@@ -50,10 +51,9 @@ _EXTRA = "body1/boatland"
 
 def is_bemio(path: Path) -> bool:
     """True when ``path`` is an HDF5 file with the BEMIO ``/body1/hydro_coeffs`` group."""
-    import h5py
 
     try:
-        with h5py.File(path, "r") as f:
+        with open_hdf5(path, "BEMIO database") as f:
             return _HC in f
     except OSError:
         return False
@@ -154,13 +154,14 @@ def read_bemio(path: str | Path) -> HydroDB:
         The file is missing, not HDF5, lacks a required dataset, or holds arrays of the wrong shape
         or with NaN — the message names the file and the dataset.
     """
-    import h5py
 
     path = Path(path)
     if not path.exists():
         raise HydroDataError(path, None, "file not found")
     try:
-        f = h5py.File(path, "r")
+        f = open_hdf5(path, "BEMIO database")
+    except BoatlandInputError as exc:
+        raise HydroDataError(path, None, str(exc).removeprefix(f"{path}: ")) from None
     except OSError as exc:
         raise HydroDataError(path, None, f"not a readable HDF5 file ({exc.__class__.__name__}: "
                                          f"{str(exc).split('(')[0].strip()}); expected a BEMIO database") from None

@@ -86,7 +86,8 @@ def _records(path: Path):
         try:
             for rec in reader.records:
                 yield rec, None
-        except (McapError, EOFError, ValueError, struct.error, zstd_error) as exc:  # the readable part ends here
+        except (McapError, EOFError, ValueError, struct.error, zstd_error, RuntimeError) as exc:  # the readable
+            # part ends here (RuntimeError: lz4's, on a damaged chunk)
             yield None, exc
 
 

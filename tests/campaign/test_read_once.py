@@ -33,7 +33,7 @@ def versions(tmp):
     with h5py.File(tmp / "db_b.h5", "a") as f:
         f.attrs["note"] = "edited"
     camp = tmp / "camp.toml"
-    camp.write_text(f'name = "race"\nscenario = "landing.toml"\nseeds = 2\nmaster_seed = 3\naccess = 10.0\n'
+    camp.write_text('name = "race"\nscenario = "landing.toml"\nseeds = 2\nmaster_seed = 3\naccess = 10.0\n'
                     '[set]\n"radiation.method" = "state_space"\n[axes]\n"sea.Hs" = [0.5, 1.2]\n'
                     '[incidents]\nslip_distance = [0.05]\n', encoding="utf-8")
     return camp

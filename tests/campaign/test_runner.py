@@ -122,7 +122,7 @@ def test_a_lost_dask_worker_costs_no_trial(reference, tmp_path, dask_cluster):
             while p.poll() is None and time.monotonic() < deadline and \
                     (sum(1 for _ in open(journal)) if journal.exists() else 0) < target:
                 time.sleep(0.01)
-            pids = sorted(w["pid"] for w in client.scheduler_info()["workers"].values())
+            pids = sorted(client.run(os.getpid).values())         # the worker processes (not their nannies)
             killed = p.poll() is None
             if killed:
                 os.kill(pids[int(rng.integers(len(pids)))], signal.SIGKILL)
