@@ -38,6 +38,7 @@ import os
 import shutil
 import socket
 import time
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -45,7 +46,7 @@ import numpy as np
 from boatland import __version__
 from boatland.atomic import atomic_hdf5, remove_stale_parts
 from boatland.inputs import open_hdf5
-from boatland.errors import BoatlandInputError
+from boatland.errors import BoatlandInputError, BoatlandWarning
 
 __all__ = ["CampaignStore", "StoreLock", "ROW_FIELDS", "FORMAT"]
 
@@ -156,6 +157,20 @@ def _changed_inputs(theirs, ours) -> str:
     return " and ".join(names)
 
 
+def _fits(row: dict, dt: np.dtype) -> bool:
+    """Whether a journal row's values fit the store's columns (numbers where numbers go)."""
+    out = np.zeros(1, dtype=dt)
+    try:
+        for name in dt.names:
+            value = row.get(name, math.nan if dt[name].kind == "f" else 0)
+            if dt[name].kind in "fi" and (isinstance(value, (str, bytes, bool, list, dict)) or value is None):
+                return False
+            out[0][name] = value.encode()[:200] if isinstance(value, str) else value
+    except (ValueError, TypeError, OverflowError):
+        return False
+    return True
+
+
 def row_dtype(incident_names, extra_fields=()) -> np.dtype:
     """Columns of ``/trials``: :data:`ROW_FIELDS`, one per incident definition, then ``extra_fields``
     ((name, numpy type, meaning) of a method's own columns)."""
@@ -253,25 +268,34 @@ class CampaignStore:
         return store
 
     def _merge_journal(self) -> None:
+        """The journal's rows of this campaign into :attr:`rows`; a line cut by a kill, damaged, of another
+        campaign or with values of the wrong type is left out (its trial runs again), and said once."""
         if not self.journal.exists():
             return
         names = {n for n, _, _ in ROW_FIELDS + self.extra_fields}
         n_trials = int(self.header.get("n_trials", 0))
+        dt = row_dtype(self.incident_names, self.extra_fields)
+        left_out = 0
         with os.fdopen(os.open(self.journal, os.O_RDONLY | _NOFOLLOW | getattr(os, "O_NONBLOCK", 0)), "rb") as fh:
             for line in fh:
                 try:
                     rec = json.loads(line)
-                except ValueError:        # a line cut by a kill, or damaged: that trial runs again
+                except ValueError:
+                    left_out += 1
                     continue
-                if not isinstance(rec, dict) or rec.get("campaign_digest") != self.header["campaign_digest"]:
-                    continue
-                row = rec.get("row")
-                if not isinstance(row, dict) or not names <= set(row):
+                row = rec.get("row") if isinstance(rec, dict) else None
+                if rec is None or not isinstance(rec, dict) or rec.get("campaign_digest") != self.header["campaign_digest"] \
+                        or not isinstance(row, dict) or not names <= set(row) or not _fits(row, dt):
+                    left_out += 1
                     continue
                 trial = row["trial"]
-                if not isinstance(trial, int) or isinstance(trial, bool) or not 0 <= trial < max(n_trials, trial + 1):
+                if not isinstance(trial, int) or isinstance(trial, bool) or trial < 0 or (n_trials and trial >= n_trials):
+                    left_out += 1
                     continue
                 self.rows.setdefault(trial, row)
+        if left_out:
+            warnings.warn(f"{self.journal}: {left_out} line(s) damaged or of another campaign left out (their trials "
+                          "run again)", BoatlandWarning, stacklevel=3)
 
     # ------------------------------------------------------------------ writing
     def add(self, row: dict) -> None:

@@ -152,10 +152,24 @@ def read_bemio(path: str | Path) -> HydroDB:
     ------
     HydroDataError
         The file is missing, not HDF5, lacks a required dataset, or holds arrays of the wrong shape
-        or with NaN — the message names the file and the dataset.
+        or with NaN, or is damaged anywhere — the message names the file and, where it can, the dataset.
     """
-
     path = Path(path)
+    try:
+        return _read_bemio(path)
+    except HydroDataError as exc:
+        if exc.source is None:        # from an object made of the file's arrays (a hull mesh): name the file
+            raise HydroDataError(path, exc.where, exc.message) from None
+        raise
+    except BoatlandInputError:
+        raise
+    except (KeyError, ValueError, TypeError, IndexError, RuntimeError, OSError, OverflowError) as exc:
+        raise HydroDataError(path, None, f"damaged ({type(exc).__name__}: {str(exc).splitlines()[0] if str(exc) else ''})"
+                                         "; expected a BEMIO database") from None
+
+
+def _read_bemio(path: Path) -> HydroDB:
+    """:func:`read_bemio`'s reading (its errors other than :class:`HydroDataError` are damage)."""
     if not path.exists():
         raise HydroDataError(path, None, "file not found")
     try:
@@ -186,8 +200,14 @@ def read_bemio(path: str | Path) -> HydroDB:
             except (TypeError, ValueError):
                 raise HydroDataError(path, f"/{name}", f"expected numbers, got {v!r:.60}") from None
 
-        rho = float(num("simulation_parameters/rho").reshape(-1)[0])
-        g = float(num("simulation_parameters/g").reshape(-1)[0])
+        def one(name):
+            v = num(name).reshape(-1)
+            if v.size != 1:
+                raise HydroDataError(path, f"/{name}", f"expected one number, got {v.size}")
+            return float(v[0])
+
+        rho = one("simulation_parameters/rho")
+        g = one("simulation_parameters/g")
         w = num("simulation_parameters/w").reshape(-1)
         beta = num("simulation_parameters/wave_dir").reshape(-1)
         depth_raw = get("simulation_parameters/water_depth", required=False)
@@ -243,7 +263,7 @@ def read_bemio(path: str | Path) -> HydroDB:
             solver=str(ex.get("provenance_solver", solver)),
             created=str(ex.get("provenance_created", "")),
             reader=str(ex.get("provenance_reader", "bemio")),
-            notes=tuple(json.loads(ex.get("provenance_notes", "[]"))) + tuple(notes),
+            notes=tuple(_notes(ex.get("provenance_notes", "[]"), path)) + tuple(notes),
         )
         mesh = topsides = None
         if f"{_EXTRA}/mesh/vertices" in f:
@@ -262,6 +282,17 @@ def read_bemio(path: str | Path) -> HydroDB:
         )
     except HydroDataError as exc:
         raise HydroDataError(path, exc.where, exc.message) from None
+
+
+def _notes(text, path: Path) -> list[str]:
+    """The provenance notes stored as a JSON list of strings."""
+    try:
+        notes = json.loads(text)
+    except (TypeError, ValueError):
+        raise HydroDataError(path, f"/{_EXTRA}", "its provenance_notes attribute is not JSON") from None
+    if not isinstance(notes, list):
+        raise HydroDataError(path, f"/{_EXTRA}", "its provenance_notes attribute is not a list")
+    return [str(n) for n in notes]
 
 
 #: WEC-Sim's mean-drift groups, in the order they are preferred, and what each method gives.

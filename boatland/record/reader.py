@@ -162,7 +162,18 @@ def read_run_log(path: str | Path) -> RunLog:
     for t_ns, raw in by_topic["/events"]:
         m = Log.FromString(raw)
         events.append(((t_ns - epoch) / 1e9, _LEVEL_NAME.get(m.level, "UNKNOWN"), m.message))
-    summary = json.loads(meta["boatland.summary"]["summary"]) if "boatland.summary" in meta else None
+    summary = None
+    if "boatland.summary" in meta:        # metadata records carry no CRC: damage shows as bad JSON
+        try:
+            summary = json.loads(meta["boatland.summary"]["summary"])
+        except (ValueError, TypeError, KeyError):
+            notes.append(f"{path}: the run's summary record is damaged; left out (the steps and events are intact)")
+    for key in ("scenario", "start_pose", "scene", "provenance"):
+        try:
+            json.loads(run.get(key) or "null")
+        except (ValueError, TypeError):
+            raise BoatlandInputError(f"{path}: damaged — its run metadata ({key}) is not JSON; the log cannot be "
+                                     "replayed") from None
     return RunLog(path=path, columns=columns, events=events, metadata=run, summary=summary, complete=complete,
                   notes=notes)
 

@@ -67,6 +67,9 @@ def _check_bind(bind: str, port: int) -> None:
                                  "every interface)") from None
     if not infos or not 0 < int(port) < 65536:
         raise BoatlandInputError(f"--port {port}: must lie in 1 … 65535")
+    if infos[0][0] != socket.AF_INET:      # Rerun 0.41's server sink takes an IPv4 address only
+        raise BoatlandInputError(f"--bind {bind}: an IPv4 address is needed (Rerun's server takes no IPv6 "
+                                 "address): 127.0.0.1, or 0.0.0.0 for every interface")
 
 
 def check_port_free(bind: str, port: int) -> None:

@@ -33,6 +33,10 @@ from boatland.irf.impulse import describe_spikes
 
 __all__ = ["HydroDB", "HullMesh", "Provenance", "rigid_body_mass_matrix", "roll_critical_damping", "skew"]
 
+#: The largest entry a mass matrix may have (kg, kg·m², kg·m): an assumption, far above any vessel boatland is
+#: for (a CTV's is ~1e5 kg and ~1e7 kg·m²; a supertanker's mass 5e8 kg) — beyond it an input is a mistake.
+MASS_LIMIT = 1e12
+
 
 def _frozen(a, dtype=float) -> np.ndarray:
     arr = np.array(a, dtype=dtype, copy=True)
@@ -270,6 +274,9 @@ class HydroDB:
         object.__setattr__(self, "disp_vol", dv)
         if self.M is not None and not (self.M[0, 0] > 0 and np.allclose(self.M, self.M.T, rtol=1e-9, atol=1e-9 * abs(self.M[0, 0]))):
             raise bad("M", "the mass matrix must be symmetric with a positive mass")
+        if self.M is not None and np.max(np.abs(self.M)) > MASS_LIMIT:
+            raise bad("M", f"entries up to {np.max(np.abs(self.M)):.3g}: beyond {MASS_LIMIT:.0e} (kg, kg·m², kg·m) no "
+                           "vessel's mass matrix reaches — a unit error or a damaged file?")
 
     # ------------------------------------------------------------------ derived quantities
     @property
