@@ -26,11 +26,9 @@ def fifo(tmp_path):
 
 
 def test_a_fifo_a_device_and_a_folder_are_refused_before_a_byte_is_read(fifo, tmp_path):
-    t0 = time.monotonic()
     for path, kind in ((fifo, "a FIFO"), (Path("/dev/zero"), "a character device"), (tmp_path, "a folder")):
         with pytest.raises(BoatlandInputError, match=f"^{path}: {kind}.*not the scenario file; give a regular file$"):
-            read_input(path, "scenario file", "toml")
-    assert time.monotonic() - t0 < 2.0
+            read_input(path, "scenario file", "toml")      # (a blocking open of the FIFO would never return)
     with pytest.raises(BoatlandInputError, match="no such file \\(the run log\\)"):
         read_input(tmp_path / "nothing.mcap", "run log", "mcap")
 
@@ -60,7 +58,7 @@ def test_every_input_kind_refuses_what_is_not_a_file(argv, bad, fifo, tmp_path):
     t0 = time.monotonic()
     r = subprocess.run([sys.executable, "-m", "boatland", *args], capture_output=True, text=True, timeout=30, env=ENV,
                        cwd=tmp_path)
-    assert time.monotonic() - t0 < 8.0          # the interpreter's start and imports; the refusal itself is at once
+    assert time.monotonic() - t0 < 20.0      # no hang (a bound far above the ~1 s it takes; not a timing)
     said = r.stdout if argv[:2] == ["scenario", "check"] else r.stderr     # the check's report is its output
     lines = [ln for ln in said.splitlines() if ln.strip()]
     assert r.returncode == 2 and len(lines) == 1 and path in lines[0], r.stderr
