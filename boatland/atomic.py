@@ -10,22 +10,22 @@ from pathlib import Path
 from typing import Iterator
 
 __all__ = ["atomic_path", "atomic_hdf5", "fsync_path", "stale_parts", "remove_stale_parts", "CHECKSUM_MAGIC",
-           "USERBLOCK", "hdf5_checksum"]
+           "TRAILER", "hdf5_trailer"]
 
-#: HDF5 files boatland writes start with a 512-byte user block (which HDF5 and every netCDF/HDF5 reader skip)
-#: holding this tag and the SHA-256 of the rest of the file: a reader finds damage (a flipped byte, a
-#: truncation) before the HDF5 library parses it — a damaged file can crash that library, not just fail.
-CHECKSUM_MAGIC = b"boatland-sha256:"
-USERBLOCK = 512
+#: HDF5 files boatland writes end with a trailer after the HDF5 data — this tag, the SHA-256 of everything
+#: before the trailer (hex) and a newline — which HDF5, netCDF4, h5netcdf and xarray ignore (bytes past the
+#: file's end address): a reader finds damage (a flipped byte) before the HDF5 library parses the file, which
+#: a damaged file can crash rather than fail. A tool that edits the file in place truncates it to its end
+#: address, dropping the trailer: the edited file is then read as any HDF5 file.
+CHECKSUM_MAGIC = b"\nboatland-sha256:"
+TRAILER = len(CHECKSUM_MAGIC) + 64 + 1
 
 
-def hdf5_checksum(image) -> bytes:
-    """The user block of an HDF5 file image written with a 512-byte user block: the tag, the SHA-256 of
-    everything after the block (hex), zero padding."""
+def hdf5_trailer(image) -> bytes:
+    """The trailer of an HDF5 file image: the tag, the SHA-256 of the image (hex), a newline."""
     import hashlib
 
-    head = CHECKSUM_MAGIC + hashlib.sha256(memoryview(image)[USERBLOCK:]).hexdigest().encode() + b"\n"
-    return head + bytes(USERBLOCK - len(head))
+    return CHECKSUM_MAGIC + hashlib.sha256(image).hexdigest().encode() + b"\n"
 
 
 def fsync_path(path: str | os.PathLike) -> None:
@@ -105,8 +105,8 @@ def atomic_hdf5(target: str | os.PathLike, mode: str = "w", **file_kwargs):
     ``OSError`` of the final Python write, with nothing left behind — where HDF5's own I/O failing mid-file
     leaves the library in a state that can crash the process as it exits. ``mode`` ``"w"`` starts empty;
     ``"r+"`` starts from ``target``'s contents (to change an existing file). The whole file is in memory
-    while it is made. A file with a 512-byte user block (every new one) carries its checksum there
-    (:func:`hdf5_checksum`; checked by :func:`boatland.inputs.open_hdf5`).
+    while it is made. The file ends with its checksum (:func:`hdf5_trailer`; checked by
+    :func:`boatland.inputs.open_hdf5`).
     """
     import io
 
@@ -119,14 +119,10 @@ def atomic_hdf5(target: str | os.PathLike, mode: str = "w", **file_kwargs):
     if mode == "r+":
         with open(target, "rb") as fh:
             buffer.write(fh.read())
-    else:
-        file_kwargs.setdefault("userblock_size", USERBLOCK)
     with h5py.File(buffer, mode, **file_kwargs) as f:
-        block = f.userblock_size
         yield f
-    image = buffer.getbuffer()
-    if block == USERBLOCK:                         # ours (or a file made so): its checksum in the user block
-        image[:USERBLOCK] = hdf5_checksum(image)
+    data = buffer.getvalue()
+    image = data + hdf5_trailer(data)
     with atomic_path(target) as tmp:
         with open(tmp, "wb") as fh:
             fh.write(image)

@@ -118,10 +118,11 @@ def read_text_input(path: str | os.PathLike, what: str, kind: str = "text", enco
 def open_hdf5(path: str | os.PathLike, what: str):
     """An HDF5 input opened from its bytes, read once (:func:`read_input`), as an ``h5py.File`` (read only).
 
-    A file boatland wrote carries the SHA-256 of its contents in its user block
-    (:func:`boatland.atomic.hdf5_checksum`): it is checked first, so that a damaged file (a flipped byte, a
-    truncation) is refused in one line before the HDF5 library — which a damaged file can crash — parses it.
-    Other HDF5 files are opened as they are.
+    A file boatland wrote ends with the SHA-256 of its contents (:func:`boatland.atomic.hdf5_trailer`): it is
+    checked first, so that a damaged file (a flipped byte) is refused in one line before the HDF5 library —
+    which a damaged file can crash — parses it. A truncated file has lost its trailer, and HDF5 itself refuses
+    a file shorter than its end address; other HDF5 files (written elsewhere, or edited in place by another
+    tool, which drops the trailer) are opened as they are.
 
     Raises
     ------
@@ -133,14 +134,14 @@ def open_hdf5(path: str | os.PathLike, what: str):
 
     import h5py
 
-    from boatland.atomic import CHECKSUM_MAGIC, USERBLOCK
+    from boatland.atomic import CHECKSUM_MAGIC, TRAILER
 
     data = read_input(path, what, "hdf5")
-    if data.startswith(CHECKSUM_MAGIC):
-        stored = data[len(CHECKSUM_MAGIC):len(CHECKSUM_MAGIC) + 64]
-        if len(data) <= USERBLOCK or hashlib.sha256(memoryview(data)[USERBLOCK:]).hexdigest().encode() != stored:
+    tail = data[-TRAILER:]
+    if len(data) > TRAILER and tail.startswith(CHECKSUM_MAGIC):
+        if hashlib.sha256(memoryview(data)[:-TRAILER]).hexdigest().encode() != tail[len(CHECKSUM_MAGIC):-1]:
             raise BoatlandInputError(f"{path}: damaged — its contents do not match the checksum boatland wrote with "
-                                     f"it (changed or cut short since); not a usable {what}")
+                                     f"it (changed since, not by a tool that rewrote it); not a usable {what}")
     try:
         return h5py.File(io.BytesIO(data), "r")
     except OSError as exc:

@@ -252,11 +252,12 @@ def test_a_slide_incident_against_brute_force(tmp_path):
     src = slide_campaign(tmp_path)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        names = incident_names(load_campaign(src, load_scenario=load))
+        camp = load_campaign(src, load_scenario=load)
+    names = incident_names(camp)
     assert INCIDENT in names
     with Executor("local", 2) as pool:
-        est, _ = isee_run(pool, src, 0, SLIDE_HS, names, INCIDENT, cov=0.1, most=600)
-        plain = plain_runs(pool, src, 0, SLIDE_HS, names, range(N_SLIDE))
+        est, _ = isee_run(pool, camp, 0, SLIDE_HS, names, INCIDENT, cov=0.1, most=600)
+        plain = plain_runs(pool, camp, 0, SLIDE_HS, names, range(N_SLIDE))
     assert (plain["status"] == 0).all()
     hit = np.isfinite(plain[f"incident: {INCIDENT}"])
     slip = np.isfinite(plain["incident: first slip"])   # in the access (a slide may go on from a slip before it)

@@ -131,7 +131,7 @@ def test_comments_semicolons_and_tolerance(tmp_path):
 
 
 def test_missing_file_and_bad_record_fields(tmp_path):
-    with pytest.raises(BoatlandInputError, match="cannot read the wave record"):
+    with pytest.raises(BoatlandInputError, match="no such file \\(the wave record\\)"):
         MeasuredRecord.from_csv(tmp_path / "nope.csv")
     with pytest.raises(BoatlandInputError, match=r"eta: sample 2 is nan; every sample must be finite"):
         MeasuredRecord(eta=[0.0, 1.0, np.nan, 0.0, 1.0], dt=0.1)
