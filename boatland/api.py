@@ -28,14 +28,11 @@ def scenario_path(name: str | Path | None = None) -> Path:
     ``"model2_j03"``); None: the default trial (``scenarios/ctv_landing.toml``)."""
     from boatland.errors import BoatlandInputError
     from boatland.checks.files import default_scenario_path
-    from boatland.resources import shipped_file, shipped_names
+    from boatland.resources import path_or_shipped, shipped_names
 
     if name is None:
         return default_scenario_path()
-    path = Path(name)
-    if path.exists():
-        return path
-    found = shipped_file(str(name))
+    found = path_or_shipped(name)
     if found is not None:
         return found
     raise BoatlandInputError(f"{name}: no such file, and not a shipped scenario ({', '.join(shipped_names())})")

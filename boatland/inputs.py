@@ -18,7 +18,7 @@ from typing import BinaryIO
 
 from boatland.errors import BoatlandInputError
 
-__all__ = ["LIMITS", "open_input", "read_input", "check_input", "read_text_input", "open_hdf5"]
+__all__ = ["LIMITS", "HDF5_DAMAGE", "damage_text", "file_kind", "open_input", "read_input", "check_input", "read_text_input", "open_hdf5"]
 
 _MiB = 1 << 20
 #: Largest file [bytes] accepted per kind of input. Assumptions, not measurements of any standard: a
@@ -30,7 +30,9 @@ _KINDS = ((stat.S_ISFIFO, "a FIFO (named pipe)"), (stat.S_ISCHR, "a character de
           (stat.S_ISBLK, "a block device"), (stat.S_ISSOCK, "a socket"), (stat.S_ISDIR, "a folder"))
 
 
-def _not_regular(mode: int) -> str:
+def file_kind(mode: int) -> str:
+    """What a file that is not a regular one is, from its ``st_mode``: "a FIFO (named pipe)", "a character
+    device", …, "a folder"."""
     return next((name for test, name in _KINDS if test(mode)), "not a regular file")
 
 
@@ -63,7 +65,7 @@ def open_input(path: str | os.PathLike, what: str, kind: str) -> BinaryIO:
     try:
         st = os.fstat(fd)
         if not stat.S_ISREG(st.st_mode):
-            raise BoatlandInputError(f"{path}: {_not_regular(st.st_mode)}, not the {what}; give a regular file")
+            raise BoatlandInputError(f"{path}: {file_kind(st.st_mode)}, not the {what}; give a regular file")
         limit = LIMITS[kind]
         if st.st_size > limit:
             raise BoatlandInputError(f"{path}: {st.st_size / _MiB:,.0f} MiB, more than a {what} can be "
@@ -113,6 +115,16 @@ def read_text_input(path: str | os.PathLike, what: str, kind: str = "text", enco
     except UnicodeDecodeError as exc:
         raise BoatlandInputError(f"{path}: not a text file (byte {exc.start} is not {encoding.upper()}); "
                                  f"expected the {what}") from None
+
+
+#: What h5py (and the readers on it) raise meeting damage inside a file it could open — caught after
+#: :class:`BoatlandInputError` (itself a ``ValueError``), which is re-raised as it is.
+HDF5_DAMAGE = (OSError, KeyError, ValueError, TypeError, IndexError, RuntimeError, OverflowError)
+
+
+def damage_text(exc: BaseException) -> str:
+    """One line for an error met inside a damaged file: its type and the first line of its message."""
+    return f"{type(exc).__name__}: {str(exc).splitlines()[0] if str(exc) else ''}"
 
 
 def open_hdf5(path: str | os.PathLike, what: str):

@@ -20,6 +20,7 @@ from pathlib import Path
 from typing import Iterable, Sequence
 
 from boatland.errors import BoatlandInputError
+from boatland.inputs import file_kind
 
 __all__ = ["Output", "check_outputs", "figure_formats", "same_file"]
 
@@ -86,16 +87,11 @@ def _check_one(out: Output) -> None:
         if why:
             raise BoatlandInputError(f"{flag} {p}: cannot write in {where} ({why})")
         return
-    if p.is_symlink():      # writing through it would change the file it points to (or follow a loop)
-        raise BoatlandInputError(f"{flag} {p}: is a symbolic link (to {os.readlink(p)}); boatland writes only "
-                                 "files it names itself — give the target's own path or another name")
     if p.is_dir():
         raise BoatlandInputError(f"{flag} {p}: is a folder; give a file name")
     if p.exists() and not stat.S_ISREG(p.stat().st_mode):
-        kind = next((name for test, name in ((stat.S_ISFIFO, "a FIFO"), (stat.S_ISCHR, "a character device"),
-                                             (stat.S_ISBLK, "a block device"), (stat.S_ISSOCK, "a socket"))
-                     if test(p.stat().st_mode)), "not a regular file")
-        raise BoatlandInputError(f"{flag} {p}: is {kind}, which an output would replace; give a file name")
+        raise BoatlandInputError(f"{flag} {p}: is {file_kind(p.stat().st_mode)}, which an output would replace; "
+                                 "give a file name")
     if not p.name or p.name in (".", ".."):
         raise BoatlandInputError(f"{flag} {p}: not a file name")
     if out.kind == "figure":
@@ -163,5 +159,5 @@ def check_outputs(outputs: Sequence[Output], inputs: Iterable[Path | str | None]
                     if same_file(fa, fb):
                         raise BoatlandInputError(f"{a.flag} {a.path} and {b.flag} {b.path} are the same file "
                                                  f"({fa}); give them different names")
-    for out in outs:
+    for out in outs:          # (symbolic links refused above)
         _check_one(out)

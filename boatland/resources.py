@@ -17,7 +17,7 @@ from pathlib import Path
 
 from boatland.errors import BoatlandInputError
 
-__all__ = ["shipped_scenarios", "shipped_file", "shipped_names", "require", "EXTRAS"]
+__all__ = ["shipped_scenarios", "shipped_file", "shipped_names", "path_or_shipped", "require", "EXTRAS"]
 
 #: Optional module → the extra that installs it (``pip install 'boatland[<extra>]'``).
 EXTRAS = {"capytaine": "bem", "netCDF4": "bem", "xarray": "xarray"}
@@ -46,6 +46,15 @@ def shipped_file(name: str, kind: str = "scenario") -> Path | None:
         return None
     folder = _shipped_folder(kind)
     return next((c for c in (folder / name, folder / f"{name}.toml") if c.is_file()), None)
+
+
+def path_or_shipped(name: str | Path, kind: str = "scenario") -> Path | None:
+    """``name`` as a path when it exists, else the shipped file of that name (:func:`shipped_file`), else
+    None — the one lookup behind every "a file or a shipped name" argument."""
+    path = Path(name)
+    if path.exists():
+        return path
+    return shipped_file(str(name), kind)
 
 
 def require(module: str, what: str):

@@ -84,6 +84,8 @@ def screenshot(log: str, out: str, env: dict, size: str = "1600x900") -> None:
     window, so that the virtual pointer (at the display's centre) hovers over nothing."""
     import socket
 
+    from boatland.record.rerun_log import wait_listening
+
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))
         port = s.getsockname()[1]
@@ -93,15 +95,8 @@ def screenshot(log: str, out: str, env: dict, size: str = "1600x900") -> None:
                                "--bind", "127.0.0.1", "--port", str(port), "--window-size", size],
                               env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
     try:
-        deadline = time.monotonic() + 60
-        while True:
-            try:
-                socket.create_connection(("127.0.0.1", port), timeout=0.5).close()
-                break
-            except OSError:
-                if viewer.poll() is not None or time.monotonic() > deadline:
-                    raise OSError("the Rerun viewer did not start")
-                time.sleep(0.2)
+        if not wait_listening("127.0.0.1", port, timeout=60.0):
+            raise OSError("the Rerun viewer did not start")
         subprocess.run([sys.executable, "-m", "boatland", "replay", log, "--connect", url], cwd=ROOT, env=env,
                        check=True, stdout=subprocess.DEVNULL)
         code = (f"from rerun.experimental import ViewerClient; import time; time.sleep(3); "

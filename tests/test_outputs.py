@@ -32,7 +32,7 @@ def test_a_link_a_fifo_or_a_device_as_output_is_refused(tmp_path):
         with pytest.raises(BoatlandInputError, match=f"^-o {link}: is a symbolic link"):
             check_outputs([Output("-o", link)], [SCENARIO])
     os.mkfifo(tmp_path / "pipe")
-    with pytest.raises(BoatlandInputError, match="is a FIFO, which an output would replace"):
+    with pytest.raises(BoatlandInputError, match="is a FIFO \\(named pipe\\), which an output would replace"):
         check_outputs([Output("-o", tmp_path / "pipe")])
     with pytest.raises(BoatlandInputError, match="is a character device, which an output would replace"):
         check_outputs([Output("-o", Path("/dev/null"))])

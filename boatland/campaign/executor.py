@@ -209,20 +209,22 @@ class Executor:
                 return _RESENT
 
         pending = 0
-        try:
-            for args in arglists:
-                send(args)
-                pending += 1
-                while not finished.empty():        # rows that finished while later tasks were being submitted
-                    out = result(finished.get())
-                    if out is not _RESENT:
-                        pending -= 1
-                        yield out
-            while pending:
+
+        def collect(wait: bool):
+            """The results finished so far (``wait``: all still pending), resent tasks not counted."""
+            nonlocal pending
+            while pending and (wait or not finished.empty()):
                 out = result(finished.get())
                 if out is not _RESENT:
                     pending -= 1
                     yield out
+
+        try:
+            for args in arglists:
+                send(args)
+                pending += 1
+                yield from collect(wait=False)    # rows that finished while later tasks were being submitted
+            yield from collect(wait=True)
         except BaseException:          # the consumer stopped (an error, Ctrl-C): cancel, stop the workers now
             self._cancel(futures)
             raise

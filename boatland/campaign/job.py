@@ -13,7 +13,7 @@ from typing import Any, Mapping
 from boatland.campaign.plan import load_campaign
 from boatland.errors import BoatlandInputError
 from boatland.outputs import Output, check_outputs
-from boatland.resources import shipped_file, shipped_names
+from boatland.resources import path_or_shipped, shipped_names
 from boatland.tomlspec import key_changes
 
 __all__ = ["campaign", "campaign_path"]
@@ -22,10 +22,7 @@ __all__ = ["campaign", "campaign_path"]
 def campaign_path(name: str | Path) -> Path:
     """A campaign file: a path, or the name of one shipped in ``scenarios/campaigns/`` (``"demo"``,
     ``"isee_rare"``, ``"table414"``)."""
-    path = Path(name)
-    if path.exists():
-        return path
-    found = shipped_file(str(name), "campaign")
+    found = path_or_shipped(name, "campaign")
     if found is not None:
         return found
     raise BoatlandInputError(f"{name}: no such file, and not a shipped campaign ({', '.join(shipped_names('campaign'))})")
@@ -82,8 +79,9 @@ def campaign(source, *, store: str | Path | None = None, changes: Mapping[str, A
     if isinstance(source, dict):
         doc = dict(source)
         name = str(doc.get("scenario", ""))
-        if name and not Path(name).exists() and shipped_file(name) is not None:
-            doc["scenario"] = str(shipped_file(name))
+        found = path_or_shipped(name) if name else None
+        if found is not None:
+            doc["scenario"] = str(found)
     else:
         doc = campaign_path(source)
     camp = load_campaign(doc, load_scenario=load, changes=key_changes(changes, overrides))

@@ -287,12 +287,14 @@ class Campaign:
         out.update({str(p): file_sha256(p) for p in self.input_files()[1 + self.from_file:]})
         return out
 
-    def digest(self) -> str:
+    def digest(self, digests: dict[str, str] | None = None) -> str:
         """SHA-256 of what a store belongs to: the campaign file's content, the base scenario's, and the
         contents (SHA-256) of every file they read (:meth:`input_files`: database, measured-wave record) —
-        a resume never mixes results of changed inputs."""
+        a resume never mixes results of changed inputs. ``digests``: :meth:`input_digests` already taken
+        (the files are then not read again)."""
         text = json.dumps(self.document, sort_keys=True, default=str)
-        files = "\n".join(f"{p.name} {file_sha256(p)}" for p in self.input_files()[1 + self.from_file:])
+        shas = digests if digests is not None else self.input_digests()
+        files = "\n".join(f"{p.name} {shas[str(p)]}" for p in self.input_files()[1 + self.from_file:])
         method = "" if self.method == "monte-carlo" else f"\nmethod {self.method}"
         return hashlib.sha256(f"{text}\n{self.base.digest()}\n{files}{method}".encode()).hexdigest()
 

@@ -128,7 +128,7 @@ def _checked(campaign: Campaign, load_database) -> dict:
         An input file changed while the databases were being read (named; nothing has run).
     """
     before = campaign.input_digests()
-    key = (campaign.digest(), load_database)
+    key = (campaign.digest(before), load_database)
     if key in _CHECKED:
         return _CHECKED[key]
     from boatland.checks import check

@@ -62,7 +62,7 @@ from boatland.campaign.labels import (
 from boatland.campaign.runner import completed
 from boatland.campaign.store import FORMAT, INCIDENT_PREFIX
 from boatland.errors import BoatlandInputError
-from boatland.inputs import open_hdf5
+from boatland.inputs import HDF5_DAMAGE, damage_text, open_hdf5
 from boatland.freqdomain.statistics import DEFAULT_STATISTICS
 from boatland.trial.incidents import SlipDistance, parse_incident
 
@@ -109,11 +109,8 @@ def read_store(path: str | Path) -> dict:
             sens = f["sensitivity"][()] if "sensitivity" in f else None
     except BoatlandInputError:
         raise
-    except OSError as exc:
-        raise BoatlandInputError(f"{path}: not a readable HDF5 file ({str(exc).splitlines()[0]})") from None
-    except (KeyError, ValueError, TypeError, RuntimeError) as exc:    # h5py meeting damage inside the file
-        raise BoatlandInputError(f"{path}: a damaged campaign store ({type(exc).__name__}: "
-                                 f"{str(exc).splitlines()[0] if str(exc) else ''})") from None
+    except HDF5_DAMAGE as exc:
+        raise BoatlandInputError(f"{path}: a damaged campaign store ({damage_text(exc)})") from None
     if stats is None:
         raise BoatlandInputError(f"{path}: the campaign has not finished (no statistics yet); run it again to resume")
     if trials.size == 0 or stats.size == 0:

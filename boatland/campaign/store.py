@@ -45,7 +45,7 @@ import numpy as np
 
 from boatland import __version__
 from boatland.atomic import atomic_hdf5, remove_stale_parts
-from boatland.inputs import open_hdf5
+from boatland.inputs import HDF5_DAMAGE, damage_text, open_hdf5
 from boatland.errors import BoatlandInputError, BoatlandWarning
 
 __all__ = ["CampaignStore", "StoreLock", "ROW_FIELDS", "FORMAT"]
@@ -236,10 +236,9 @@ class CampaignStore:
                     data = f["trials"][()] if "trials" in f else None
             except BoatlandInputError:
                 raise
-            except (OSError, KeyError, ValueError, TypeError, RuntimeError) as exc:   # damage inside the file
-                raise BoatlandInputError(f"{path}: not a readable campaign store ({type(exc).__name__}: "
-                                         f"{str(exc).splitlines()[0] if str(exc) else ''}); choose another output "
-                                         "file") from None
+            except HDF5_DAMAGE as exc:
+                raise BoatlandInputError(f"{path}: not a readable campaign store ({damage_text(exc)}); choose "
+                                         "another output file") from None
             if fmt != FORMAT:
                 raise BoatlandInputError(f"{path}: not a boatland campaign store (format {fmt!r}); "
                                          "choose another output file")

@@ -76,7 +76,7 @@ def main(argv: list[str] | None = None) -> int:
         import errno
 
         where = f"{exc.filename}: " if exc.filename else ""
-        what = exc.strerror or str(exc).splitlines()[0] if str(exc) else type(exc).__name__
+        what = exc.strerror or (str(exc).splitlines()[0] if str(exc) else type(exc).__name__)
         if exc.errno in (errno.ENOSPC, errno.EFBIG, getattr(errno, "EDQUOT", -1)):
             _error(f"no space left writing {exc.filename or 'an output'} ({what}); nothing else lost — its "
                    "temporary file is removed, earlier outputs and finished campaign trials are kept")

@@ -119,13 +119,11 @@ def shipped_or_path(kind: str):
     the file is missing); a bare name that is neither is refused with the shipped names."""
     import argparse
 
-    from boatland.resources import shipped_file, shipped_names
+    from boatland.resources import path_or_shipped, shipped_names
 
     def parse(text: str) -> Path:
         path = Path(text)
-        if path.exists():
-            return path
-        found = shipped_file(text, kind)
+        found = path_or_shipped(text, kind)
         if found is not None:
             return found
         if path.suffix or os.sep in text or "/" in text:   # a file's path: its loader says it is missing

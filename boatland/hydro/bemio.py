@@ -39,7 +39,7 @@ import numpy as np
 from boatland import __version__
 from boatland.atomic import atomic_hdf5
 from boatland.errors import BoatlandInputError, HydroDataError
-from boatland.inputs import open_hdf5
+from boatland.inputs import HDF5_DAMAGE, damage_text, open_hdf5
 from boatland.vessel.database import HullMesh, HydroDB, Provenance
 from boatland.vessel.radiation import padded_state_space, read_memory, write_memory
 
@@ -163,9 +163,8 @@ def read_bemio(path: str | Path) -> HydroDB:
         raise
     except BoatlandInputError:
         raise
-    except (KeyError, ValueError, TypeError, IndexError, RuntimeError, OSError, OverflowError) as exc:
-        raise HydroDataError(path, None, f"damaged ({type(exc).__name__}: {str(exc).splitlines()[0] if str(exc) else ''})"
-                                         "; expected a BEMIO database") from None
+    except HDF5_DAMAGE as exc:
+        raise HydroDataError(path, None, f"damaged ({damage_text(exc)}); expected a BEMIO database") from None
 
 
 def _read_bemio(path: Path) -> HydroDB:

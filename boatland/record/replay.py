@@ -62,15 +62,11 @@ def replay(path: str | Path, target: str, *, quiet: bool = False, bind: str = DE
     view.static()
     view.columns(log.columns)
     view.events([(round(t * NS), level, text) for t, level, text in log.events])
-    try:
-        rec.flush()
-        if kind in ("save", "spawn", "connect"):
-            rec.disconnect()
-        if file is not None:
-            file.close()           # complete, or an OSError naming it (nothing left under its name)
-    finally:
-        if file is not None:
-            file.abandon()
+    rec.flush()
+    if kind in ("save", "spawn", "connect"):
+        rec.disconnect()
+    if file is not None:
+        file.close()           # complete, or an OSError naming it (nothing left under its name)
     moment = key_moment(log.columns, waves_from(log.metadata))
     shown = kind in ("spawn", "connect") and show_moment(where, moment[0])
     return Replayed(log, rec, kind, where, list(log.notes) + list(scene.notes), moment, shown)

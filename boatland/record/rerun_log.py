@@ -33,7 +33,7 @@ from boatland.record.scene import COLORS, FENDER_RADIUS, FORCE_SCALE, MODE_COLOR
     SERIES, SERIES_LIGHT, Scene, fender_forces, scene_from_trial
 
 __all__ = ["RerunView", "RerunLog", "parse_target", "open_stream", "check_target", "blueprint", "serve_until_interrupted",
-           "spawn_viewer", "exposure_warning", "key_moment", "show_moment", "APPLICATION_ID", "TIMELINE"]
+           "spawn_viewer", "exposure_warning", "key_moment", "show_moment", "wait_listening", "APPLICATION_ID", "TIMELINE"]
 
 APPLICATION_ID = "boatland"
 TIMELINE = "sim_time"
@@ -84,7 +84,7 @@ def check_port_free(bind: str, port: int) -> None:
                                      "another viewer or server?); give another --port") from None
 
 
-def _wait_listening(bind: str, port: int, timeout: float = 5.0) -> bool:
+def wait_listening(bind: str, port: int, timeout: float = 5.0) -> bool:
     """Whether something accepts connections on ``bind``:``port`` within ``timeout`` s (tried at least once)."""
     import time
 
@@ -128,13 +128,13 @@ def spawn_viewer(bind: str = DEFAULT_BIND, port: int = DEFAULT_PORT) -> None:
     its server)."""
     import subprocess
 
-    if _wait_listening(bind, port, timeout=0.0):
+    if wait_listening(bind, port, timeout=0.0):
         return
     _warn_if_open(bind, port, "the spawned viewer listens")
     subprocess.Popen([sys.executable, "-m", "rerun_cli", "--bind", bind, "--port", str(port), "--memory-limit", "75%",
                       "--server-memory-limit", "1GiB"], env={**os.environ, "RERUN_APP_ONLY": "true"},
                      stdin=subprocess.DEVNULL, start_new_session=True)
-    if not _wait_listening(bind, port, timeout=SPAWN_TIMEOUT):
+    if not wait_listening(bind, port, timeout=SPAWN_TIMEOUT):
         raise BoatlandInputError(f"--rerun spawn: the Rerun viewer did not start listening on {bind}:{port} within "
                                  f"{SPAWN_TIMEOUT:g} s (its own messages are above); use --rerun serve, or "
                                  "--rerun save=FILE.rrd")
@@ -296,7 +296,7 @@ def open_stream(target: str, *, recording_id: str | None = None, n_contacts: int
         _warn_if_open(bind, port, "serving")
         sink = rr.GrpcServerSink(bind_ip=bind, port=port)
         rec.set_sinks(sink, default_blueprint=bp)
-        if not _wait_listening(bind, port):
+        if not wait_listening(bind, port):
             rec.disconnect()
             raise BoatlandInputError(f"--rerun serve: the Rerun server did not start listening on {bind}:{port}")
         where = _proxy_url(bind, port)
@@ -315,63 +315,30 @@ def open_stream(target: str, *, recording_id: str | None = None, n_contacts: int
 
 
 class RrdFile:
-    """A ``.rrd`` recording written from the stream's bytes (Rerun's ``binary_stream``, held in memory until
-    :meth:`close`: each read of it is a whole recording with its own footer, so it is read once) by Python
-    into a temporary file beside it, renamed onto its name when complete.
+    """A ``.rrd`` recording written by Python from the stream's bytes (Rerun's ``binary_stream``, held in
+    memory until :meth:`close`: each read of it is a whole recording with its own footer, so it is read once)
+    through :func:`boatland.atomic.atomic_path`.
 
     Rerun's own file sink logs a failed write and carries on, so a full disk or a file-size limit would
     leave a truncated recording under its name and a run that says "wrote"; here such a failure is an
-    ``OSError`` naming the file (:meth:`drain`, :meth:`close`), and nothing is left under its name.
+    ``OSError`` naming the file, and nothing is left under its name.
     """
 
     def __init__(self, rec, path: str | os.PathLike):
-        import tempfile
-
         self.path = Path(path)
         self.stream = rec.binary_stream()
-        fd, tmp = tempfile.mkstemp(prefix=f".{self.path.name}.", suffix=".part", dir=self.path.parent)
-        self.tmp, self.fh = Path(tmp), os.fdopen(fd, "wb")
-
-    def drain(self) -> None:
-        """Write what the stream holds (once, at the end: :meth:`close`)."""
-        try:
-            data = self.stream.read()
-            if data:
-                self.fh.write(data)
-        except OSError as exc:
-            self.abandon()
-            raise OSError(exc.errno, exc.strerror, str(self.path)) from None
+        self.closed = False
 
     def close(self) -> None:
-        """The rest of the stream, flushed to the disk, renamed onto the file's name."""
-        from boatland.atomic import fsync_path
+        """The whole stream, written to the file (once)."""
+        from boatland.atomic import atomic_path
 
-        if self.fh is None:
+        if self.closed:
             return
-        self.drain()
-        try:
-            self.fh.flush()
-            os.fsync(self.fh.fileno())
-            self.fh.close()
-            self.fh = None
-            umask = os.umask(0)
-            os.umask(umask)
-            os.chmod(self.tmp, 0o666 & ~umask)
-            os.replace(self.tmp, self.path)
-            fsync_path(self.path.parent)
-        except OSError as exc:
-            self.abandon()
-            raise OSError(exc.errno, exc.strerror, str(self.path)) from None
-
-    def abandon(self) -> None:
-        """Drop the temporary file (after a failure, or when the run stops early)."""
-        if self.fh is not None:
-            try:
-                self.fh.close()
-            except OSError:
-                pass
-            self.fh = None
-        self.tmp.unlink(missing_ok=True)
+        self.closed = True
+        data = self.stream.read() or b""
+        with atomic_path(self.path) as tmp:
+            tmp.write_bytes(data)
 
 
 def _proxy_url(bind: str, port: int) -> str:

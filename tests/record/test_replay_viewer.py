@@ -7,7 +7,6 @@ import shutil
 import socket
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import numpy as np
@@ -15,7 +14,7 @@ import pytest
 
 from boatland.record.reader import read_run_log
 from boatland.record.replay import waves_from
-from boatland.record.rerun_log import TIMELINE, key_moment
+from boatland.record.rerun_log import TIMELINE, key_moment, wait_listening
 
 REPO = Path(__file__).resolve().parents[2]
 ENV = {**os.environ, "PYTHONPATH": str(REPO), "WGPU_BACKEND": os.environ.get("WGPU_BACKEND", "vulkan")}
@@ -41,16 +40,9 @@ def viewer(tmp_path_factory):
     home = tmp_path_factory.mktemp("viewer-home")
     p = subprocess.Popen(["xvfb-run", "-a", "-s", "-screen 0 3840x2160x24", shutil.which("rerun"), "--bind", "127.0.0.1",
                           "--port", str(port), "--window-size", "1600x900"], env={**ENV, "HOME": str(home)},
-                         stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, start_new_session=True)
+                         stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
     try:
-        deadline = time.monotonic() + 60
-        while True:
-            try:
-                socket.create_connection(("127.0.0.1", port), timeout=0.5).close()
-                break
-            except OSError:
-                assert p.poll() is None and time.monotonic() < deadline, "the Rerun viewer did not start"
-                time.sleep(0.2)
+        assert wait_listening("127.0.0.1", port, timeout=60.0), "the Rerun viewer did not start"
         yield f"rerun+http://127.0.0.1:{port}/proxy"
     finally:
         os.killpg(p.pid, 9)
