@@ -274,8 +274,12 @@ class LandingSetup:
             cols = tuple(int(c) for c in np.unique(np.concatenate([j, j1])))
             if len(cols) == db.n_dir:
                 cols = None
-        key = (float(radius), float(position[0]), float(position[1]), float(depth), float(self.heading_deg), cols)
+        layout = (float(radius), float(position[0]), float(position[1]), float(depth), float(self.heading_deg))
         per_db = _NEAR_PILE.setdefault(db, {})
+        for (made, made_cols), near in per_db.items():   # a table made for more columns serves fewer
+            if made == layout and (made_cols is None or (cols is not None and set(cols) <= set(made_cols))):
+                return near
+        key = (layout, cols)
         if key not in per_db:
             Xs = pile_scattered_excitation(db, position, self.heading_deg, radius, depth, directions=cols)
             if cols is None:
