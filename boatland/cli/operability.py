@@ -1,28 +1,56 @@
-"""``boatland operability``: availability of access over a scatter diagram / hindcast table."""
+"""``boatland operability``: access of one or more vessels at a turbine's landings over a site's weather — a
+scatter diagram or a hindcast (:mod:`boatland.site`)."""
 
 from __future__ import annotations
 
-import json
 import sys
 from pathlib import Path
 
+from boatland.cli.common import freq_check, print_json, screening_options, set_option, shipped_or_path
+from boatland.cli.guard import in_range, positive
 from boatland.errors import BoatlandInputError
+from boatland.outputs import Output
 from boatland.reproducible import pinned
-from boatland.cli.common import (freq_check, freq_directions, freq_load, freq_sea, freq_setup, scenario_argument,
-                                  screening_options)
 
-__all__ = ["add_parser", "cmd"]
+__all__ = ["DEFAULT_WINDOW_HOURS", "add_parser", "cmd"]
+
+#: The access window of a hindcast when none is asked for [h]. An assumption: a short visit — the transfer
+#: out, about three hours of work, the transfer back (say so, or give --window).
+DEFAULT_WINDOW_HOURS = 4.0
 
 
 def add_parser(sub) -> None:
     op = sub.add_parser(
-        "operability", help="availability of access over a wave scatter diagram / hindcast table",
-        description="Availability of push-on access (Grøtting 2015, Small Water Plane Area Solutions for Access of Offshore Wind Turbines, NTNU, §4.1): the share of the time whose sea state "
-                    "(Hs, Tp, direction) is below the screening's limiting Hs. SCATTER is a CSV with columns Hs, "
-                    "Tp, direction_deg (towards, global) or direction_from_deg, occurrence; see "
-                    "scenarios/scatter_north_sea.csv.")
-    scenario_argument(op, optional=False)
-    op.add_argument("scatter", type=Path, help="scatter table (CSV)")
+        "operability", help="access at a turbine's landings over a scatter diagram or a hindcast",
+        description="Availability of push-on access (Grøtting 2015, Small Water Plane Area Solutions for Access of "
+                    "Offshore Wind Turbines, NTNU, §4.1) at each of a turbine's boat landings and with the best "
+                    "landing chosen per sea state: the share of the time whose sea state is below the screening's "
+                    "limit at its own peak period and direction (wind sea + swell as two spectra when the weather "
+                    "has the partitions). A hindcast adds availability per month and year, and weather windows: the "
+                    "probability that an access window (transfer out, work, transfer back) is workable throughout, "
+                    "and the waiting time for one. Several scenarios (vessels, push settings) are compared side by "
+                    "side over the same weather. Directions are compass degrees from true North: the waves come "
+                    "FROM direction_from_deg; a landing's bearing is the direction from the tower's axis to it "
+                    "(the vessel heads the opposite way). WEATHER: CSV (time or occurrence, Hs, Tp, "
+                    "direction_from_deg; see scenarios/weather/) or netCDF-4.")
+    set_option(op)
+    op.add_argument("scenarios", nargs="+", type=shipped_or_path("scenario"), metavar="SCENARIO",
+                    help="scenario file (TOML) or the name of a shipped one, e.g. ctv_landing; several: side by side")
+    op.add_argument("weather", type=Path, metavar="WEATHER",
+                    help="scatter diagram or hindcast (CSV or netCDF), e.g. scenarios/weather/example_hindcast.csv")
+    op.add_argument("--landing", type=in_range(0.0, 360.0, lo_open=False, hi_open=True, unit="°"), action="append",
+                    metavar="DEG",
+                    dest="landings",
+                    help="compass bearing of a boat landing from the tower's axis [deg], repeatable (a turbine with "
+                         "two or three landings); default the first scenario's landing (its vessel heading + 180°)")
+    op.add_argument("--window", type=positive("h", 24 * 366), metavar="HOURS",
+                    help=f"access window of a hindcast [h]: transfer out, work, transfer back, workable throughout "
+                         f"(default {DEFAULT_WINDOW_HOURS:g} h, an assumption: a short visit)")
+    op.add_argument("--one-spectrum", action="store_true",
+                    help="judge every sea state as one spectrum of its total Hs, Tp and direction even when the "
+                         "weather has wind-sea and swell partitions (Grøtting 2015 found +31 %% availability with two)")
+    op.add_argument("-o", "--output", type=Path, metavar="FIGURE",
+                    help="write the figure (availability per month, windows; PNG, SVG or PDF)")
     screening_options(op)
     op.set_defaults(func=cmd)
 
@@ -31,39 +59,70 @@ def add_parser(sub) -> None:
 def cmd(args) -> int:
     import warnings
 
+    import numpy as np
+
+    from boatland.cli.common import load_guarded, settings_changes
     from boatland.errors import BoatlandWarning
-    from boatland.freqdomain import availability, read_scatter
+    from boatland.freqdomain import LandingSetup
+    from boatland.inputs import check_input
+    from boatland.site import landing_bearing, operability, read_weather, relative_direction, side_by_side
+    from boatland.vessel.directions import direction_problem
 
     freq_check(args)
-    from boatland.inputs import check_input
-
-    check_input(args.scatter, "scatter table", "text")      # a FIFO or device refused before the model loads
-    scenario, db = freq_load(args.scenario, (), args)
-    setup = freq_setup(args, scenario, db)
+    check_input(args.weather, "weather file", "text")       # a FIFO or device refused before the models load
+    names = [str(s) for s in args.scenarios]
+    if len(set(names)) != len(names):
+        raise BoatlandInputError(f"scenario {next(n for n in names if names.count(n) > 1)} is given twice")
+    changes, flags = settings_changes(args)
+    loaded = []
+    for path in args.scenarios:
+        scenario, db, warns, _ = load_guarded(path, [Output("-o", args.output, "figure")], [args.weather],
+                                              changes=changes, flags=flags)
+        for w in warns:
+            print(f"warning: {w}", file=sys.stderr)
+        loaded.append((scenario, db))
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", BoatlandWarning)
-        try:
-            scatter = read_scatter(args.scatter)
-        except UnicodeDecodeError as exc:
-            raise BoatlandInputError(f"{args.scatter}: not a text CSV file (byte {exc.start} is not UTF-8)") from None
+        weather = read_weather(args.weather)
     for w in caught:
         print(f"warning: {w.message}", file=sys.stderr)
-    freq_directions(scenario, db, (scatter.direction_deg - setup.heading_deg) % 360.0,
-                    f"{args.scatter}: direction (relative to the vessel's heading {setup.heading_deg:g}°)")
-    sea, _ = freq_sea(scenario)
-    depth = scenario.sea.water_depth if scenario.sea is not None else None
-    print(f"screening {scenario.name} over the {scatter.direction_deg.size} sea states of {args.scatter} …",
-          file=sys.stderr, flush=True)
-    a = availability(db, setup, scatter, accept=args.accept, statistics=args.statistics, method=args.method,
-                     sea=sea, water_depth=depth, access_duration=args.access, mu=args.mu, thrust=args.thrust)
+    landings = np.array(args.landings if args.landings else
+                        [float(landing_bearing(loaded[0][0].vessel.heading_deg))], dtype=float)
+    if len(set(np.round(landings, 6))) != landings.size:
+        raise BoatlandInputError("--landing: the same bearing is given twice")
+    window = args.window if args.window is not None else DEFAULT_WINDOW_HOURS
+    froms = [weather.from_deg] + ([] if args.one_spectrum else [d for _, _, d in weather.parts.values()])
+    results = []
+    for scenario, db in loaded:
+        beta = relative_direction(np.concatenate(froms)[:, None], landings[None, :]).ravel()
+        problem = direction_problem(db, np.unique(np.round(beta, 6)), name=repr(scenario.vessel.database or db.name))
+        if problem:
+            raise BoatlandInputError(f"{args.weather}: directions at the landings {', '.join(f'{b:g}°' for b in landings)}: "
+                                     f"{problem}")
+        setup = LandingSetup.from_scenario(scenario, db, roll_limit_deg=args.roll_limit)
+        waves = scenario.sea.waves if scenario.sea is not None else None
+        parts = getattr(waves, "parts", None)
+        print(f"screening {scenario.name} over {weather.describe()} at {landings.size} landing(s) …",
+              file=sys.stderr, flush=True)
+        results.append(operability(
+            db, setup, weather, landings, name=scenario.name, window_hours=window,
+            accept=args.accept, statistics=args.statistics, method=args.method, sea=parts[0] if parts else None,
+            water_depth=scenario.sea.water_depth if scenario.sea is not None else None,
+            access_duration=args.access, mu=args.mu, thrust=args.thrust,
+            spectra="one" if args.one_spectrum else "auto"))
+    if args.output is not None:
+        from boatland.site.figures import plot_operability
+
+        plot_operability(results, args.output)
     if args.json:
-        print(json.dumps({"scenario": scenario.name, "scatter": str(args.scatter), "availability": a.availability,
-                          "downtime": a.downtime, "accept": a.accept, "statistics": a.statistics,
-                          "method": a.method, "mu": a.mu, "thrust": a.thrust, "sea_states": int(a.workable.size),
-                          "workable_sea_states": int(a.workable.sum())}, indent=2))
-    else:
-        print(f"{scenario.name} over {args.scatter} ({a.workable.size} sea states): availability "
-              f"{100 * a.availability:.1f} % (downtime {100 * a.downtime:.1f} %)")
-        print(f"  μ = {a.mu:g}, F_b = {a.thrust / 1e3:g} kN (μ·F_b = {a.mu * a.thrust / 1e3:g} kN), "
-              f"P_acc = {a.accept:g} per {args.access:g} s access, {a.statistics}, {a.method} hinge")
+        print_json({"weather": weather.source, "landings_deg": landings.tolist(),
+                    "results": [r.as_dict() for r in results]})
+        return 0
+    for r in results:
+        print(r.text())
+        print()
+    if len(results) > 1:
+        print(side_by_side(results))
+    if args.output is not None:
+        print(f"figure: {args.output}")
     return 0

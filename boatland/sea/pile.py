@@ -45,7 +45,7 @@ from boatland.diskcache import cache_key, lookup, store
 from boatland.errors import BoatlandInputError
 from boatland.vessel.wigley import panel_normals_areas
 from boatland.vessel.database import HydroDB
-from boatland.waves.diffraction import TOL, cylinder_field
+from boatland.waves.diffraction import TOL, cylinder_field, depth_factor, scattered_load
 from boatland.waves.dispersion import wavenumber
 
 __all__ = ["Pile", "pile_scattered_excitation", "pile_scattered_components", "pile_scattered_interpolated",
@@ -182,9 +182,15 @@ def pile_scattered_excitation(db: HydroDB, position, heading_deg: float, pile_ra
     a, h, pos, N, xg = _layout(db, position, heading_deg, pile_radius, water_depth)
     beta = db.wave_dir_deg if directions is None else db.wave_dir_deg[np.asarray(directions, dtype=int)]
     theta = np.radians(beta + heading_deg)
-    field = cylinder_field(xg[:, 0], xg[:, 1], xg[:, 2], db.omega, theta, a, h, g=db.g, rho=db.rho,
-                           part=part, tol=tol)
-    F = -np.einsum("pfd,pj->jdf", field.p, N, optimize=True)  # (6, Nβ, Nω)
+    if part == "scattered":     # summed over the panels as it is made: no (P, Nω, Nβ) field (scattered_load)
+        k = wavenumber(db.omega, h, db.g)
+        Z, _ = depth_factor(k[None, :], xg[:, 2][:, None], h)                           # (P, Nω)
+        W = -db.rho * db.g * Z[:, :, None] * N[:, None, :]                              # (P, Nω, 6)
+        F = scattered_load(xg[:, 0], xg[:, 1], db.omega, theta, a, W, h, g=db.g, tol=tol)
+    else:
+        field = cylinder_field(xg[:, 0], xg[:, 1], xg[:, 2], db.omega, theta, a, h, g=db.g, rho=db.rho,
+                               part=part, tol=tol)
+        F = -np.einsum("pfd,pj->jdf", field.p, N, optimize=True)  # (6, Nβ, Nω)
     k = wavenumber(db.omega, h, db.g)
     shift = np.exp(1j * np.outer(pos[0] * np.cos(theta) + pos[1] * np.sin(theta), k))  # (Nβ, Nω)
     return F * shift[None, :, :]

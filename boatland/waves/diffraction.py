@@ -79,7 +79,7 @@ from scipy import special
 from boatland.waves.dispersion import wavenumber
 
 __all__ = ["WaveField", "n_terms", "scattering_coefficients", "depth_factor", "cylinder_field",
-           "pile_force", "arc_plate_force"]
+           "scattered_load", "pile_force", "arc_plate_force"]
 
 #: Default accuracy of the truncated series, per unit incident amplitude.
 TOL = 1e-6
@@ -204,6 +204,87 @@ def _scattered_sums(x, H0, H1, A, M, cphi, sphi, cth, sth, grad, paired, eta, e_
                         s = sp * cth[d, m] - cp * sth[d, m]  # sin m(φ − β)
                         e_r[p, f, o] += tr * c
                         e_t[p, f, o] += tt * s
+
+
+@numba.njit(cache=True)
+def _scattered_load(x, H0, H1, A, M, cphi, sphi, cth, sth, W, out):
+    """out[j, d, f] += Σ_p W[p, f, j] η_s[p, f, d]: the scattered elevation at P points, weighted per point
+    and frequency, summed over the points without forming η_s (P, Nf, Nd) (:func:`scattered_load`)."""
+    P, Nf = x.shape
+    Nd = cth.shape[0]
+    J = W.shape[2]
+    H = np.empty(A.shape[1] + 1, dtype=np.complex128)
+    eta = np.empty(Nd, dtype=np.complex128)
+    for p in range(P):
+        for f in range(Nf):
+            xf = x[p, f]
+            Mf = M[f]
+            if not xf > 0.0:
+                continue
+            H[0] = H0[p, f]
+            H[1] = H1[p, f]
+            for m in range(1, Mf + 1):
+                H[m + 1] = (2.0 * m / xf) * H[m] - H[m - 1]
+            eta[:] = 0j
+            for m in range(Mf + 1):
+                t = A[f, m] * H[m]
+                cp = cphi[p, m]
+                sp = sphi[p, m]
+                for d in range(Nd):
+                    eta[d] += t * (cp * cth[d, m] + sp * sth[d, m])  # cos m(φ − β)
+            for j in range(J):
+                w = W[p, f, j]
+                if w != 0.0:
+                    for d in range(Nd):
+                        out[j, d, f] += w * eta[d]
+
+
+def scattered_load(x, y, omega, beta, a: float, weights, h: float = math.inf, *, g: float = 9.81,
+                   tol: float = TOL) -> np.ndarray:
+    r"""Weighted sums of the pile's scattered elevation over points: :math:`L_{jdf} = \sum_p W_{pfj}\,
+    \eta_s(x_p, y_p; \omega_f, \beta_d)` — e.g. with :math:`W = -\rho g Z(z_p)\, n_{pj} A_p` the
+    Froude–Krylov force of the scattered wave on a hull's panels — without forming the (P, Nf, Nd) field of
+    :func:`cylinder_field` (same series, same truncation: module docstring).
+
+    Parameters
+    ----------
+    x, y : array_like, shape (P,)
+        Points in the global frame [m], outside the pile.
+    omega : array_like, shape (Nf,)
+    beta : array_like, shape (Nd,)
+        Directions of travel [rad], global frame.
+    a, h, g, tol
+        As :func:`cylinder_field`.
+    weights : ndarray, shape (P, Nf, J)
+        Real weights per point, frequency and output.
+
+    Returns
+    -------
+    ndarray of complex, shape (J, Nd, Nf)
+    """
+    x = np.atleast_1d(np.asarray(x, dtype=float)).reshape(-1)
+    y = np.atleast_1d(np.asarray(y, dtype=float)).reshape(-1)
+    om = np.atleast_1d(np.asarray(omega, dtype=float)).reshape(-1)
+    be = np.atleast_1d(np.asarray(beta, dtype=float)).reshape(-1)
+    W = np.ascontiguousarray(weights, dtype=float)
+    k = wavenumber(om, h, g)
+    M = n_terms(k * a, tol)
+    Mmax = int(M.max()) if M.size else 0
+    A = np.zeros((om.size, Mmax + 1), dtype=complex)
+    for f in range(om.size):
+        if k[f] > 0:
+            A[f, : M[f] + 1] = scattering_coefficients(k[f] * a, int(M[f]))
+    r = np.hypot(x, y)
+    phi_p = np.arctan2(y, x)
+    kr = r[:, None] * k[None, :]
+    with np.errstate(all="ignore"):
+        H0 = special.j0(kr) - 1j * special.y0(kr)
+        H1 = special.j1(kr) - 1j * special.y1(kr)
+    mm = np.arange(Mmax + 1)
+    out = np.zeros((W.shape[2], be.size, om.size), dtype=complex)
+    _scattered_load(np.ascontiguousarray(kr), H0, H1, A, M.astype(np.int64), np.cos(np.outer(phi_p, mm)),
+                    np.sin(np.outer(phi_p, mm)), np.cos(np.outer(be, mm)), np.sin(np.outer(be, mm)), W, out)
+    return out
 
 
 def cylinder_field(x, y, z, omega, beta, a: float, h: float = math.inf, *, g: float = 9.81,

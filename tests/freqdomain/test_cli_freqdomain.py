@@ -1,4 +1,4 @@
-"""``boatland rao``, ``boatland screen`` and ``boatland operability`` as a user runs them (subprocesses):
+"""``boatland rao`` and ``boatland screen`` as a user runs them (subprocesses):
 output, figures, and bad input as one line with exit status 2."""
 
 import json
@@ -10,7 +10,6 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
 SCENARIO = ROOT / "scenarios" / "ctv_landing.toml"
-SCATTER = ROOT / "scenarios" / "scatter_north_sea.csv"
 
 
 def run(*args):
@@ -61,33 +60,11 @@ def test_screen_json():
     assert all(0 < h < 2 for row in out["Hs_limit"] for h in row)
 
 
-@pytest.mark.slow
-def test_operability_prints_availability():
-    r = run("operability", SCENARIO, SCATTER, "--json", "--mu", "0.8", "--thrust", "150e3")
-    assert r.returncode == 0, r.stderr
-    out = json.loads(r.stdout)
-    assert 0 < out["availability"] < 1 and out["sea_states"] > 100 and out["mu"] == 0.8
-
-
 @pytest.mark.parametrize("accept", ["0", "1.5", "sometimes"])
 def test_screen_accept_outside_0_1_exit_2(accept):
     one_line_error(run("screen", SCENARIO, "--accept", accept), "accepted probability")
 
 
-@pytest.mark.slow
-def test_operability_bad_scatter_exit_2(tmp_path):
-    bad = tmp_path / "bad.csv"
-    bad.write_text("Hs,Tp,direction_deg,occurrence\n1,7,180,0.5\n1,8,180,-0.5\n")
-    one_line_error(run("operability", SCENARIO, bad), "bad.csv", "line 3", "negative")
-
-
-@pytest.mark.slow
-def test_operability_sum_far_from_1_warns_and_runs(tmp_path):
-    hours = tmp_path / "hours.csv"
-    hours.write_text("Hs,Tp,direction_from_deg,occurrence\n0.1,7,0,300\n2.0,8,0,100\n")
-    r = run("operability", SCENARIO, hours)
-    assert r.returncode == 0, r.stderr
-    assert "normalised" in r.stderr and "availability 75.0 %" in r.stdout
 
 
 def test_fender_point_outside_the_hull_exit_2(tmp_path):

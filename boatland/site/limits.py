@@ -1,0 +1,192 @@
+r"""The limit of every sea state of a site's weather at each of a turbine's landings: the frequency-domain
+screening (:mod:`boatland.freqdomain.screening`) at the sea state's own peak period and relative direction,
+one sea of one spectrum — or of two, wind sea and swell, when the weather holds the partitions.
+
+**One spectrum.** A sea state (Hs, Tp, from φ_w) at the landing at bearing φ_L is judged at its relative
+direction β = φ_L − φ_w (:mod:`boatland.site.compass`): its limit is the screening's limiting Hs at (Tp, β) —
+the largest Hs whose incident probability per access is accepted (:func:`~boatland.freqdomain.statistics.
+limiting_hs`) — and the sea state is workable when Hs ≤ H_lim.
+
+**Two spectra** (Grøtting 2015 §3.2.1 eq. 3.41–3.45, after Wu 2014). Wind sea and swell are independent
+Gaussian seas; each response's spectral moments are the sum of the parts',
+
+.. math:: m_k = \sum_p H_{s,p}^2\, m_k^{(1)}(T_{p,p}, \beta_p), \qquad
+          m_k^{(1)}(T_p, \beta) = \int \omega^k |H(\omega, \beta)|^2 S_1(\omega \mid T_p)\,d\omega ,
+
+(and so their covariances), :math:`S_1` the part's spectrum at Hs = 1 m. The limit is that of the combined
+sea scaled as a whole, its mix kept: the moments per unit :math:`H_{s}^2 = \sum_p H_{s,p}^2` go into the same
+bisection, and the sea state is workable when its :math:`H_s \le H_{lim}`. Shapes (Grøtting 2015, Appendix,
+``doublespec.m`` and §4.2 — the SIMA runs): the wind sea a Pierson–Moskowitz spectrum (γ = 1), the swell a
+JONSWAP of γ = 5. A row without either part is judged as one spectrum.
+
+The margin of a sea state, :math:`H_{lim}/H_s` (> 1 workable), ranks the landings (the best landing is the
+one with the largest margin). With one spectrum it is the screening's limit over the sea's Hs, so a scatter
+table and a hindcast that lays the same sea states end to end are judged alike.
+
+Relative directions are rounded to :data:`DIRECTION_STEP` (hindcasts give directions to 1° or coarser);
+peak periods are used as given. The screening's transfer functions are computed once per scenario, for
+every direction any landing needs.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from boatland.freqdomain.landing import LandingSetup
+from boatland.freqdomain.screening import slip_transfer
+from boatland.freqdomain.statistics import (ACCEPT_PRESETS, ACCESS_DURATION, DEFAULT_STATISTICS, accept_probability,
+                                            correlation_matrix, distinct_events, limiting_hs, unit_spectra)
+from boatland.sea.spectra import SpectrumPart
+from boatland.site.compass import relative_direction
+from boatland.site.weather import Weather
+from boatland.vessel.database import HydroDB
+
+__all__ = ["DIRECTION_STEP", "PART_SHAPES", "SeaLimits", "sea_limits"]
+
+#: Relative directions are rounded to this [deg]: hindcasts (NORA10, ERA5) give directions to 1° or coarser.
+DIRECTION_STEP = 1.0
+
+#: The partitions' spectral shapes (Grøtting 2015, Appendix ``doublespec.m``: gmaW = 1, gmaS = 5).
+PART_SHAPES = {"wind_sea": SpectrumPart(Hs=1.0, Tp=6.0, kind="pm"),
+               "swell": SpectrumPart(Hs=1.0, Tp=10.0, kind="jonswap", gamma=5.0)}
+
+
+@dataclass(frozen=True, eq=False)
+class SeaLimits:
+    """Limits of every sea state at every landing.
+
+    Attributes
+    ----------
+    Hs_limit : ndarray, shape (n, L)
+        The sea state's limiting Hs [m] (of the combined sea, its mix kept, when it has two parts; inf above
+        the screening's ceiling, 0 when the fender slips without waves).
+    margin : ndarray, shape (n, L)
+        H_lim / H_s: > 1 workable.
+    beta_deg : ndarray, shape (n, L)
+        The relative direction of the (total) sea [deg].
+    governing : ndarray of str, shape (n, L)
+        The response that dominates at the limit.
+    two_spectra : ndarray of bool, shape (n,)
+        Judged as wind sea and swell.
+    landings_deg : ndarray, shape (L,)
+    accept, access_duration : float
+    statistics, method : str
+    mu, thrust : float
+    """
+
+    Hs_limit: np.ndarray
+    margin: np.ndarray
+    beta_deg: np.ndarray
+    governing: np.ndarray
+    two_spectra: np.ndarray
+    landings_deg: np.ndarray
+    accept: float
+    access_duration: float
+    statistics: str
+    method: str
+    mu: float
+    thrust: float
+
+    @property
+    def workable(self) -> np.ndarray:
+        """(n, L) bool: Hs ≤ H_lim."""
+        return self.margin >= 1.0
+
+
+def _round_direction(beta):
+    return np.mod(np.round(np.asarray(beta, dtype=float) / DIRECTION_STEP) * DIRECTION_STEP, 360.0)
+
+
+def sea_limits(db: HydroDB, setup: LandingSetup, weather: Weather, landings_deg, *,
+               accept=ACCEPT_PRESETS["best"], statistics: str = DEFAULT_STATISTICS, method: str = "improved",
+               sea: SpectrumPart | None = None, water_depth: float | None = None,
+               access_duration: float = ACCESS_DURATION, mu: float | None = None, thrust: float | None = None,
+               spectra: str = "auto", omega=None) -> SeaLimits:
+    """The limit of each of ``weather``'s sea states at each landing (module docstring).
+
+    Parameters
+    ----------
+    db, setup
+        The vessel on its landing (the landing's own geometry; its compass bearing is ``landings_deg``).
+    weather : Weather
+    landings_deg : array_like, shape (L,)
+        Compass bearings of the landings (from the tower's axis) [deg].
+    accept, statistics, method, access_duration, mu, thrust, omega
+        As :func:`~boatland.freqdomain.screening.screening_grid`.
+    sea : SpectrumPart, optional
+        The shape of a one-spectrum sea (default JONSWAP γ 3.3).
+    water_depth : float, optional
+        For a TMA shape (default the database's).
+    spectra : {"auto", "one"}
+        ``"auto"``: two spectra where the weather has partitions; ``"one"``: every sea state one spectrum of
+        its total Hs, Tp and direction.
+
+    Returns
+    -------
+    SeaLimits
+    """
+    if spectra not in ("auto", "one"):
+        raise ValueError(f"spectra {spectra!r}: use 'auto' or 'one'")
+    p_acc = accept_probability(accept)
+    L = np.atleast_1d(np.asarray(landings_deg, dtype=float)) % 360.0
+    n = weather.n
+    parts = {} if spectra == "one" else weather.parts
+    two = np.zeros(n, bool)
+    for H, _, _ in parts.values():
+        two |= H > 0
+    # the (Tp, β, Hs², shape) components of each row × landing: one for a one-spectrum row, one per part else
+    comps = []                                      # (row index, Tp, β (n_sel, L), Hs², shape name)
+    one = ~two
+    if one.any():
+        comps.append((np.flatnonzero(one), weather.Tp[one], _round_direction(
+            relative_direction(weather.from_deg[one][:, None], L[None, :])), np.ones(int(one.sum())), "sea"))
+    for name, (H, T, d) in parts.items():
+        rows = np.flatnonzero(two & (H > 0))
+        comps.append((rows, T[rows], _round_direction(relative_direction(d[rows][:, None], L[None, :])),
+                      H[rows] ** 2, name))
+    betas = np.unique(np.concatenate([c[2].ravel() for c in comps]))
+    tr = slip_transfer(db, setup, omega=omega, beta_deg=betas, method=method, mu=mu, thrust=thrust)
+    depth = db.water_depth if water_depth is None else water_depth
+    w = tr.omega
+    R = tr.capacity.size
+    G = (np.abs(tr.H) ** 2)[..., None] * (w[:, None, None, None] ** np.arange(3))     # (Nw, Nβ, R, 3)
+    C = np.einsum("wbi,wbj->wbij", tr.H, tr.H.conj()).real                               # (Nw, Nβ, R, R)
+    m = np.zeros((n, L.size, R, 3))
+    cov = np.zeros((n, L.size, R, R))
+    hs2 = np.where(two, 0.0, 1.0)                    # Σ Hs_p² of two-part rows; one-part rows per unit Hs²
+    for rows, T, beta, weight, name in comps:
+        shape = sea if name == "sea" else PART_SHAPES[name]
+        uT, iT = np.unique(T, return_inverse=True)
+        S, wt = unit_spectra(w, uT, sea=shape, water_depth=depth, g=db.g)
+        SW = S * wt                                                              # (NT, Nw)
+        ib = np.searchsorted(betas, beta)                                        # (n_sel, L)
+        for b in np.unique(ib):
+            sel_r, sel_l = np.nonzero(ib == b)
+            Sw = SW[iT[sel_r]] * weight[sel_r, None]                             # (k, Nw)
+            m[rows[sel_r], sel_l] += (Sw @ G[:, b].reshape(w.size, -1)).reshape(-1, R, 3)
+            cov[rows[sel_r], sel_l] += (Sw @ C[:, b].reshape(w.size, -1)).reshape(-1, R, R)
+        if name != "sea":
+            hs2[rows] += weight
+    m /= hs2[:, None, None, None]
+    cov /= hs2[:, None, None, None]
+    keep = distinct_events(m[..., 0], tr.capacity, correlation_matrix(cov), background=tr.background)
+    T_row = np.repeat(weather.Tp, L.size)                                        # the sea's cycles (Rayleigh)
+    table = limiting_hs(m.reshape(n * L.size, 1, R, 3), tr.capacity, T_row, [0.0], accept=p_acc,
+                        statistics=statistics, access_duration=access_duration, method=method, names=tr.names,
+                        keep=keep.reshape(n * L.size, 1, R), background=tr.background)
+    lim = table.Hs.reshape(n, L.size)
+    hs = np.where(two, np.sqrt(hs2), weather.Hs)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        margin = lim / hs[:, None]
+    beta_total = _round_direction(relative_direction(weather.from_deg[:, None], L[None, :]))
+    return SeaLimits(Hs_limit=lim, margin=margin, beta_deg=beta_total, governing=table.governing.reshape(n, L.size),
+                     two_spectra=two, landings_deg=L, accept=p_acc, access_duration=float(access_duration),
+                     statistics=statistics, method=method, mu=float(tr.setup.mu), thrust=float(tr.setup.thrust))
+
+
+def margin_text(margin: float) -> str:
+    """A margin as planners read it: ``"1.35×"``, ``"∞"``."""
+    return "∞" if math.isinf(margin) else f"{margin:.2f}×"
