@@ -66,6 +66,9 @@ FIGURES = (
            "{tmp}/report/limiting_hs_polar.png"),
     Figure("rerun_scene.png", "ctv_landing", "ctv27",
            (("run", "ctv_landing", "--log", "{tmp}/run.mcap"), ("viewer", "{tmp}/run.mcap", "{out}")), titled=False),
+    Figure("operability_example.png", "ctv_landing, ctv24_landing", "ctv27, ctv24",
+           (("operability", "ctv_landing", "ctv24_landing", "scenarios/example_hindcast.csv", "--landing", "45",
+             "--landing", "165", "--landing", "285", "-o", "{out}"),)),
     Figure("rao_ctv27_vs_ctv24.png", "ctv_landing, ctv24_landing", "ctv27, ctv24",
            (("python", "docs/rao_ctv27_vs_ctv24.py"),), "docs/rao_ctv27_vs_ctv24.png"),
 )

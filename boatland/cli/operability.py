@@ -12,7 +12,10 @@ from boatland.errors import BoatlandInputError
 from boatland.outputs import Output
 from boatland.reproducible import pinned
 
-__all__ = ["DEFAULT_WINDOW_HOURS", "add_parser", "cmd"]
+__all__ = ["DEFAULT_WINDOW_HOURS", "STORE_SUFFIXES", "add_parser", "cmd"]
+
+#: A SCENARIO argument with one of these suffixes is a campaign store (its time-domain limits).
+STORE_SUFFIXES = (".h5", ".hdf5")
 
 #: The access window of a hindcast when none is asked for [h]. An assumption: a short visit — the transfer
 #: out, about three hours of work, the transfer back (say so, or give --window).
@@ -35,7 +38,10 @@ def add_parser(sub) -> None:
                     "direction_from_deg; see scenarios/weather/) or netCDF-4.")
     set_option(op)
     op.add_argument("scenarios", nargs="+", type=shipped_or_path("scenario"), metavar="SCENARIO",
-                    help="scenario file (TOML) or the name of a shipped one, e.g. ctv_landing; several: side by side")
+                    help="scenario file (TOML) or the name of a shipped one, e.g. ctv_landing, judged by the screening "
+                         "(a slip onset) — or the store (.h5) of a rare-event campaign with an accept (method = "
+                         "\"isee\"), judged by its time-domain limits for its incident, e.g. a slide; several: side "
+                         "by side")
     op.add_argument("weather", type=Path, metavar="WEATHER",
                     help="scatter diagram or hindcast (CSV or netCDF), e.g. scenarios/weather/example_hindcast.csv")
     op.add_argument("--landing", type=in_range(0.0, 360.0, lo_open=False, hi_open=True, unit="°"), action="append",
@@ -65,7 +71,9 @@ def cmd(args) -> int:
     from boatland.errors import BoatlandWarning
     from boatland.freqdomain import LandingSetup
     from boatland.inputs import check_input
-    from boatland.site import landing_bearing, operability, read_weather, relative_direction, side_by_side
+    from boatland.outputs import check_outputs
+    from boatland.site import (LimitsTable, landing_bearing, operability, read_weather, relative_direction,
+                               side_by_side, table_operability)
     from boatland.vessel.directions import direction_problem
 
     freq_check(args)
@@ -73,27 +81,44 @@ def cmd(args) -> int:
     names = [str(s) for s in args.scenarios]
     if len(set(names)) != len(names):
         raise BoatlandInputError(f"scenario {next(n for n in names if names.count(n) > 1)} is given twice")
+    check_outputs([Output("-o", args.output, "figure")], [args.weather, *args.scenarios])
+    with warnings.catch_warnings(record=True) as caught:            # the weather before the models: cheap
+        warnings.simplefilter("always", BoatlandWarning)
+        weather = read_weather(args.weather)
+    for w in caught:
+        print(f"warning: {w.message}", file=sys.stderr)
     changes, flags = settings_changes(args)
-    loaded = []
+    loaded = []                 # (scenario, db) of a scenario, or (None, LimitsTable) of a limits store
     for path in args.scenarios:
+        if Path(path).suffix.lower() in STORE_SUFFIXES:
+            table = LimitsTable.read(path)
+            if args.mu is not None or args.thrust is not None:
+                print(f"warning: --mu/--thrust do not apply to {path}: its limits are for the push "
+                      f"{(table.thrust or 0) / 1e3:g} kN and μ_s {table.mu} its campaign ran", file=sys.stderr)
+            loaded.append((None, table))
+            continue
         scenario, db, warns, _ = load_guarded(path, [Output("-o", args.output, "figure")], [args.weather],
                                               changes=changes, flags=flags)
         for w in warns:
             print(f"warning: {w}", file=sys.stderr)
         loaded.append((scenario, db))
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always", BoatlandWarning)
-        weather = read_weather(args.weather)
-    for w in caught:
-        print(f"warning: {w.message}", file=sys.stderr)
-    landings = np.array(args.landings if args.landings else
-                        [float(landing_bearing(loaded[0][0].vessel.heading_deg))], dtype=float)
+    if not args.landings and all(sc is None for sc, _ in loaded):
+        raise BoatlandInputError("--landing: give the landings' compass bearings (a limits store does not say where "
+                                 "its landing is on the tower)")
+    first = next(sc for sc, _ in loaded if sc is not None) if not args.landings else None
+    landings = np.array(args.landings if args.landings else [float(landing_bearing(first.vessel.heading_deg))],
+                        dtype=float)
     if len(set(np.round(landings, 6))) != landings.size:
         raise BoatlandInputError("--landing: the same bearing is given twice")
     window = args.window if args.window is not None else DEFAULT_WINDOW_HOURS
     froms = [weather.from_deg] + ([] if args.one_spectrum else [d for _, _, d in weather.parts.values()])
     results = []
     for scenario, db in loaded:
+        if scenario is None:
+            print(f"judging {weather.describe()} by {db.describe()} at {landings.size} landing(s) …",
+                  file=sys.stderr, flush=True)
+            results.append(table_operability(db, weather, landings, window_hours=window))
+            continue
         beta = relative_direction(np.concatenate(froms)[:, None], landings[None, :]).ravel()
         problem = direction_problem(db, np.unique(np.round(beta, 6)), name=repr(scenario.vessel.database or db.name))
         if problem:
@@ -113,7 +138,12 @@ def cmd(args) -> int:
     if args.output is not None:
         from boatland.site.figures import plot_operability
 
-        plot_operability(results, args.output)
+        who = ", ".join(f"{sc.name} ({sc.vessel.database})" if sc is not None else f"{t.name} ({t.vessel})"
+                        for sc, t in loaded)
+        lim = results[0].limits
+        plot_operability(results, args.output, title=(
+            f"{who}: access at the landings {', '.join(f'{b:g}°' for b in landings)} over {Path(weather.source).name}"
+            f"\nP_acc {lim.accept:g} per {lim.access_duration:g} s access; push and μ as in each"))
     if args.json:
         print_json({"weather": weather.source, "landings_deg": landings.tolist(),
                     "results": [r.as_dict() for r in results]})

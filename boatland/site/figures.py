@@ -47,7 +47,7 @@ def figure_operability(results: list[Operability], *, title: str = ""):
             axes[0, 0].bar(x, 100 * r.availability(), width * 0.92, color=c, alpha=0.85, label=r.name)
     ax = axes[0, 0]
     ax.set_ylabel("available [% of the time]")
-    ax.set_ylim(0, 100)
+    ax.set_ylim(0, _top(ax))
     ax.grid(axis="y", alpha=0.3)
     ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     lim = results[0].limits
@@ -62,10 +62,17 @@ def figure_operability(results: list[Operability], *, title: str = ""):
     if windows:
         ax = axes[1, 0]
         ax.set_ylabel(f"P(a {results[0].window_hours:g}-h window starts) [%]")
-        ax.set_ylim(0, 100)
+        ax.set_ylim(0, _top(ax))
         ax.grid(axis="y", alpha=0.3)
         ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     return fig
+
+
+def _top(ax) -> float:
+    """The axis' top [%]: the largest bar or marker and a margin, at least 10 %, at most 100 %."""
+    values = [p.get_height() for p in ax.patches] + [y for line in ax.get_lines() for y in line.get_ydata()]
+    finite = [v for v in values if np.isfinite(v)]
+    return float(min(100.0, max(10.0, 1.15 * max(finite, default=0.0))))
 
 
 def plot_operability(results: list[Operability], path: str | Path, *, title: str = "", dpi: int = 110) -> Path:

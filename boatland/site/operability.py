@@ -23,12 +23,12 @@ import numpy as np
 
 from boatland.freqdomain.landing import LandingSetup
 from boatland.freqdomain.statistics import risk_in_words
-from boatland.site.limits import SeaLimits, sea_limits
+from boatland.site.limits import LimitsTable, SeaLimits, sea_limits, table_limits
 from boatland.site.weather import Weather
 from boatland.site.windows import Persistence, persistence
 from boatland.vessel.database import HydroDB
 
-__all__ = ["MONTHS", "Operability", "operability", "side_by_side"]
+__all__ = ["MONTHS", "Operability", "operability", "side_by_side", "table_operability"]
 
 MONTHS = ("Jan", "Feb", "Mar", "Apr", "May", "Jun", "Jul", "Aug", "Sep", "Oct", "Nov", "Dec")
 
@@ -62,8 +62,9 @@ class Operability:
 
     @property
     def best_landing(self) -> np.ndarray:
-        """(n,) index of the landing with the largest margin per sea state (the first of equals)."""
-        return np.argmax(self.limits.margin, axis=1)
+        """(n,) index of the landing with the largest margin per sea state (the first of equals; a landing outside
+        a time-domain table is never the best of one inside)."""
+        return np.argmax(np.nan_to_num(self.limits.margin, nan=-np.inf), axis=1)
 
     @property
     def workable(self) -> np.ndarray:
@@ -79,6 +80,15 @@ class Operability:
         if total <= 0:
             return np.full(self.landings_deg.size + 1, math.nan)
         return (wt[:, None] * self.workable).sum(axis=0) / total
+
+    @property
+    def not_covered(self) -> float:
+        """Share of the time whose sea state lies outside a time-domain table at every landing (0 for the
+        screening, which judges every sea state)."""
+        cov = self.limits.covered
+        if cov is None:
+            return 0.0
+        return float(self.weather.weight[~cov.any(axis=1)].sum())
 
     @property
     def gain(self) -> float:
@@ -121,6 +131,7 @@ class Operability:
             "two_spectra_sea_states": int(lim.two_spectra.sum()),
             "landings_deg": lim.landings_deg.tolist(), "accept": lim.accept, "access_s": lim.access_duration,
             "statistics": lim.statistics, "method": lim.method, "mu": lim.mu, "thrust": lim.thrust,
+            "limits": lim.source, "not_covered": self.not_covered,
             "availability": dict(zip(self.headers(), a.tolist())), "gain_of_choosing": self.gain,
             "best_landing_share": [float(self.weather.weight[self.best_landing == j].sum())
                                    for j in range(lim.landings_deg.size)],
@@ -148,10 +159,14 @@ class Operability:
         lim = self.limits
         head = self.headers()
         lines = [f"{self.name} over {self.weather.describe()}",
-                 f"  μ = {lim.mu:g}, F_b = {lim.thrust / 1e3:g} kN, accepted risk {risk_in_words(lim.accept, lim.access_duration)}, "
-                 f"{lim.statistics}, {lim.method} hinge"
+                 f"  limits: {lim.source}",
+                 f"  μ = {lim.mu:g}, F_b = {lim.thrust / 1e3:g} kN, accepted risk {risk_in_words(lim.accept, lim.access_duration)}"
+                 + (f", {lim.statistics}, {lim.method} hinge" if lim.covered is None else "")
                  + (f"; {int(lim.two_spectra.sum()):,} sea states judged as wind sea + swell" if lim.two_spectra.any()
                     else "")]
+        if lim.covered is not None:
+            lines.append(f"  {100 * self.not_covered:.1f} % of the time outside the table (counted as not workable)"
+                         + ("; the total sea judged (the table is for one spectrum)" if self.weather.parts else ""))
         if self.weather.carried:
             lines.append(f"  not used: {', '.join(self.weather.carried)} (the limits are the waves'; the scenario's own "
                          "wind and current act in every sea state)")
@@ -191,9 +206,20 @@ def _hours(h: float) -> str:
 def operability(db: HydroDB, setup: LandingSetup, weather: Weather, landings_deg, *, name: str = "vessel",
                 window_hours: float | None = None, **limits_kw) -> Operability:
     """The vessel's access at the landings ``landings_deg`` (compass bearings) over ``weather`` (module
-    docstring); ``window_hours`` the access window of a hindcast; ``limits_kw`` as
+    docstring), judged by the screening; ``window_hours`` the access window of a hindcast; ``limits_kw`` as
     :func:`boatland.site.limits.sea_limits`."""
-    lim: SeaLimits = sea_limits(db, setup, weather, landings_deg, **limits_kw)
+    return _judged(name, weather, sea_limits(db, setup, weather, landings_deg, **limits_kw), window_hours)
+
+
+def table_operability(table: LimitsTable, weather: Weather, landings_deg, *, name: str | None = None,
+                      window_hours: float | None = None) -> Operability:
+    """The same judged by a time-domain limits table (:class:`~boatland.site.limits.LimitsTable`: a rare-event
+    campaign's limiting Hs for its incident, e.g. a slide)."""
+    return _judged(name or f"{table.name} ({table.incident}, time domain)", weather,
+                   table_limits(table, weather, landings_deg), window_hours)
+
+
+def _judged(name: str, weather: Weather, lim: SeaLimits, window_hours: float | None) -> Operability:
     windows: tuple[Persistence, ...] = ()
     if window_hours is not None and weather.time is not None:
         ok = lim.workable
