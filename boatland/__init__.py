@@ -9,11 +9,13 @@ In a notebook::
     ds = r.to_xarray()                   # time × dof / contact, units, inputs as attributes
     ds = boatland.campaign("demo", seeds=2)              # a campaign, run (or resumed) into demo.h5
     store = boatland.open_store("demo.h5", grid=True)    # its store: P over Hs × heading
+    op = boatland.operability("ctv_landing", "hindcast.csv", landings=[45, 165, 285])   # a site's year
 
 Exported (imported on first use, so ``import boatland`` stays light): :func:`simulate`,
 :func:`load_scenario` (:mod:`boatland.api`), :func:`campaign` (:mod:`boatland.campaign.job`; the package
 :mod:`boatland.campaign` is callable as it), :func:`open_store` (:mod:`boatland.campaign.dataset`),
-:class:`Result` (:mod:`boatland.trial.result`), :func:`load_builtin` (the built-in vessel databases).
+:func:`operability` (:mod:`boatland.api`, over :mod:`boatland.site`), :class:`Result`
+(:mod:`boatland.trial.result`), :func:`load_builtin` (the built-in vessel databases).
 
 Rooms, in layers (each imports only from those below it; checked by import-linter in CI and by
 ``tests/test_architecture.py``):
@@ -28,7 +30,8 @@ Rooms, in layers (each imports only from those below it; checked by import-linte
    (the file format), :mod:`boatland.landing` (the scenario on its vessel: one :class:`Setup`),
    :mod:`boatland.checks` (everything that refuses or warns before a run);
 3. services: one trial (:mod:`boatland.trial`; its incident definitions :mod:`boatland.trial.incidents`),
-   frequency domain (:mod:`boatland.freqdomain`), campaigns (:mod:`boatland.campaign`);
+   frequency domain (:mod:`boatland.freqdomain`), campaigns (:mod:`boatland.campaign`); above them the
+   planner's site (:mod:`boatland.site`: the compass, a site's weather, operability at its landings);
 4. edges: :mod:`boatland.record` (MCAP, Rerun, replay, figures), :mod:`boatland.api` (the notebook API),
    :mod:`boatland.validation`, :mod:`boatland.cli`.
 
@@ -38,13 +41,15 @@ warning, for one release.
 
 __version__ = "0.1.0"
 
-__all__ = ["simulate", "load_scenario", "campaign", "open_store", "Result", "load_builtin", "__version__"]
+__all__ = ["simulate", "load_scenario", "campaign", "open_store", "operability", "Result", "load_builtin",
+           "__version__"]
 
 _EXPORTS = {
     "simulate": ("boatland.api", "simulate"),
     "load_scenario": ("boatland.api", "load_scenario"),
     "campaign": ("boatland.campaign", None),     # the package, callable: boatland.campaign("demo", seeds=2)
     "open_store": ("boatland.campaign.dataset", "open_store"),
+    "operability": ("boatland.api", "operability"),
     "Result": ("boatland.trial.result", "Result"),
     "load_builtin": ("boatland.hydro.builtin", "load_builtin"),
 }

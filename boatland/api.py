@@ -20,7 +20,7 @@ from typing import Any, Mapping
 from boatland.campaign.job import campaign, campaign_path
 from boatland.tomlspec import key_changes
 
-__all__ = ["load_scenario", "simulate", "scenario_path", "campaign", "campaign_path"]
+__all__ = ["load_scenario", "simulate", "scenario_path", "campaign", "campaign_path", "operability"]
 
 
 def scenario_path(name: str | Path | None = None) -> Path:
@@ -116,3 +116,52 @@ def simulate(scenario=None, *, changes: Mapping[str, Any] | None = None, log: st
         for s in sinks:
             s.close()
 
+
+
+def operability(scenario, weather, *, landings=None, window: float | None = 4.0, accept="best",
+                changes: Mapping[str, Any] | None = None, **overrides):
+    """A vessel's access at a turbine's landings over a site's weather, as ``boatland operability`` judges it
+    (:mod:`boatland.site`): availability per landing and with the best landing, per month and year, windows.
+
+    Parameters
+    ----------
+    scenario : path, str or Scenario
+        As :func:`load_scenario` (judged by the frequency-domain screening) — or the path of a rare-event
+        campaign's store (``.h5``), judged by its time-domain limits (:class:`boatland.site.LimitsTable`).
+    weather : path or boatland.site.Weather
+        A scatter diagram or hindcast file (:func:`boatland.site.read_weather`), or one read.
+    landings : sequence of float, optional
+        Compass bearings of the landings from the tower's axis [deg]; default the scenario's own landing (its
+        vessel heading + 180°; a store needs them given).
+    window : float or None
+        Access window of a hindcast [h] (4 h: an assumption, a short visit).
+    accept : float or str
+        Accepted probability of an incident per 30-min access (the screening's; a store has its own).
+    changes, **overrides
+        Changes of the scenario, as :func:`load_scenario`.
+
+    Returns
+    -------
+    boatland.site.Operability
+        ``.availability()``, ``.monthly()``, ``.windows``, ``.text()``, ``.as_dict()``.
+    """
+    from boatland.checks.files import check_loaded
+    from boatland.errors import BoatlandInputError
+    from boatland.freqdomain import LandingSetup
+    from boatland.site import LimitsTable, Weather, landing_bearing, read_weather, table_operability
+    from boatland.site import operability as judge
+
+    w = weather if isinstance(weather, Weather) else read_weather(weather)
+    if isinstance(scenario, (str, Path)) and Path(scenario).suffix.lower() in (".h5", ".hdf5"):
+        if landings is None:
+            raise BoatlandInputError("landings: give the landings' compass bearings (a limits store does not say "
+                                     "where its landing is on the tower)")
+        return table_operability(LimitsTable.read(scenario), w, landings, window_hours=window)
+    sc = load_scenario(scenario, changes=changes, **overrides)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        db, _ = check_loaded(sc)
+    parts = getattr(getattr(sc.sea, "waves", None), "parts", None)
+    L = [float(landing_bearing(sc.vessel.heading_deg))] if landings is None else landings
+    return judge(db, LandingSetup.from_scenario(sc, db), w, L, name=sc.name, window_hours=window, accept=accept,
+                 sea=parts[0] if parts else None, water_depth=sc.sea.water_depth if sc.sea is not None else None)

@@ -25,6 +25,13 @@ Relative to the vessel, ``beta = 180°`` is head seas (waves come from ahead, on
 ``beta = 0°`` following seas, ``beta = 90°`` waves travelling towards port (coming from starboard).
 This is the WAMIT / Capytaine / BEMIO definition.
 
+Site frame
+----------
+Planners, hindcasts and metocean reports give directions in compass degrees from true North, waves, wind and
+current where they come *from*, and a landing by its bearing from the tower's axis; scenario files' global
+frame has x East and y North. Converted once, in :mod:`boatland.site.compass` (with a picture):
+β = (landing bearing − from) mod 360.
+
 Phase (time) convention
 -----------------------
 boatland uses **exp(+iωt)**, as WAMIT and the BEMIO HDF5 files do. A complex amplitude

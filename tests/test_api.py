@@ -2,12 +2,15 @@
 
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
 import boatland
 from boatland.errors import BoatlandInputError
 from boatland.tomlspec import SpecError
+
+ROOT = Path(__file__).resolve().parents[1]
 
 
 def test_exports_are_lazy():
@@ -86,3 +89,20 @@ def test_campaign_resumes_its_store_and_refuses_another_campaigns(tmp_path):
     with pytest.raises(BoatlandInputError, match="not a shipped campaign"):
         boatland.campaign("no_such_campaign")
     assert not list(tmp_path.glob("*.h5.*")) and sorted(p.name for p in tmp_path.iterdir()) == ["t.h5"]
+
+
+@pytest.mark.slow
+def test_operability_is_what_the_command_prints():
+    """``boatland.operability`` judges as ``boatland operability`` does (the same JSON numbers)."""
+    import json
+
+    hindcast = ROOT / "scenarios" / "example_hindcast.csv"
+    op = boatland.operability("ctv_landing", hindcast, landings=[45, 165, 285], **{"thrust.force": 200e3})
+    r = subprocess.run([sys.executable, "-m", "boatland", "operability", "ctv_landing", str(hindcast), "--landing",
+                        "45", "--landing", "165", "--landing", "285", "--set", "thrust.force=200e3", "--json"],
+                       capture_output=True, text=True, timeout=600)
+    assert r.returncode == 0, r.stderr
+    cli = json.loads(r.stdout)["results"][0]
+    assert list(cli["availability"].values()) == op.availability().tolist()
+    assert cli["thrust"] == 200e3 and cli["window"]["hours"] == 4.0
+    assert cli["window"]["probability"]["best"] == op.windows[-1].probability()
