@@ -19,7 +19,9 @@ CSV (``#`` comment lines allowed; a header row names the columns, in any order):
 netCDF (netCDF-4, i.e. HDF5, read with h5py): one-dimensional variables over ``time`` with the names above, or
 the CF standard names ``sea_surface_wave_significant_height``,
 ``sea_surface_wave_period_at_variance_spectral_density_maximum`` and ``sea_surface_wave_from_direction``;
-``time`` with CF units (``hours since 2021-01-01 00:00:00``; seconds, minutes, hours or days).
+``time`` with CF units (``hours since 2021-01-01 00:00:00``; seconds, minutes, hours or days); packed values
+(``scale_factor``, ``add_offset``) and missing ones (``_FillValue``, ``missing_value``) read as CF says — a missing
+sea state is refused, naming its time.
 """
 
 from __future__ import annotations
@@ -330,9 +332,14 @@ def _read_netcdf(path: Path) -> Weather:
         t = origin + np.round(tvals * _UNITS[m.group(1).lower()]).astype(np.int64).astype("timedelta64[s]")
         cols = {}
         for k in ("Hs", "Tp", "direction_from_deg"):
-            v = np.asarray(find(k)[()], dtype=float).ravel()
+            var = find(k)
+            v = _decoded(var)
             if v.size != t.size:
                 raise BoatlandInputError(f"{path}: variable {k!r} has {v.size} values for {t.size} times")
+            bad = np.flatnonzero(~np.isfinite(v))
+            if bad.size:
+                raise BoatlandInputError(f"{path}: variable {var.name.lstrip('/')!r} ({k}) has no value at time "
+                                         f"{t[bad[0]]} ({bad.size} missing in all): fill or cut the gap")
             cols[k] = v
         parts = {}
         for p in PARTS:
@@ -341,10 +348,28 @@ def _read_netcdf(path: Path) -> Weather:
                 if any(v is None for v in vs):
                     raise BoatlandInputError(f"{path}: partition {p}: need {p}_Hs, {p}_Tp and "
                                              f"{p}_direction_from_deg")
-                parts[p] = tuple(np.asarray(v[()], dtype=float).ravel() for v in vs)
+                parts[p] = tuple(_decoded(v) for v in vs)
         carried = tuple(c for c in CARRIED if c in f)
     return Weather.series(t, cols["Hs"], cols["Tp"], cols["direction_from_deg"], source=str(path), parts=parts,
                           carried=carried)
+
+
+def _decoded(var) -> np.ndarray:
+    """A netCDF variable's values as CF says to read them: ``_FillValue`` / ``missing_value`` → NaN, then
+    ``scale_factor`` and ``add_offset`` (packed integers, as ERA5 files are)."""
+    raw = np.asarray(var[()]).ravel()
+    v = raw.astype(float)
+    for key in ("_FillValue", "missing_value"):
+        fill = var.attrs.get(key)
+        if fill is not None:
+            for f in np.atleast_1d(fill):
+                v[raw == f] = np.nan
+    scale, offset = var.attrs.get("scale_factor"), var.attrs.get("add_offset")
+    if scale is not None:
+        v = v * float(np.atleast_1d(scale)[0])
+    if offset is not None:
+        v = v + float(np.atleast_1d(offset)[0])
+    return v
 
 
 def _attr(var, name: str):

@@ -59,6 +59,30 @@ def test_a_hindcast_from_netcdf_written_by_xarray(tmp_path):
             np.testing.assert_array_equal(a, b)
 
 
+def test_packed_netcdf_as_era5_writes_it(tmp_path):
+    """Hs, Tp and direction packed in 16-bit integers with a scale and an offset, missing values as _FillValue
+    (how ERA5 files come): read as CF says; a missing sea state is refused naming its time."""
+    xr = pytest.importorskip("xarray")
+    csv = read_weather(HINDCAST)
+    n = 240
+    ds = xr.Dataset({"Hs": ("time", csv.Hs[:n]), "Tp": ("time", csv.Tp[:n]),
+                     "direction_from_deg": ("time", csv.from_deg[:n])},
+                    coords={"time": csv.time[:n].astype("datetime64[ns]")})
+    enc = {k: {"dtype": "int16", "scale_factor": sf, "add_offset": off, "_FillValue": -32767}
+           for k, sf, off in (("Hs", 0.001, 10.0), ("Tp", 0.001, 15.0), ("direction_from_deg", 0.01, 180.0))}
+    path = tmp_path / "packed.nc"
+    ds.to_netcdf(path, engine="h5netcdf", encoding=enc)
+    w = read_weather(path)
+    np.testing.assert_allclose(w.Hs, csv.Hs[:n], atol=0.0005 + 1e-12)
+    np.testing.assert_allclose(w.Tp, csv.Tp[:n], atol=0.0005 + 1e-12)
+    np.testing.assert_allclose(w.from_deg, csv.from_deg[:n], atol=0.005 + 1e-9)
+    ds["Hs"][17] = np.nan
+    ds.to_netcdf(tmp_path / "gap.nc", engine="h5netcdf", encoding=enc)
+    with pytest.raises(BoatlandInputError, match=r"gap\.nc: variable 'Hs' \(Hs\) has no value at time "
+                                                 r"2021-01-03T03:00:00 \(1 missing in all\)"):
+        read_weather(tmp_path / "gap.nc")
+
+
 def test_netcdf_without_a_wave_height_names_it(tmp_path):
     xr = pytest.importorskip("xarray")
     t = np.arange(np.datetime64("2021-01-01"), np.datetime64("2021-01-02"), np.timedelta64(1, "h"))
