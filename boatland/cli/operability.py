@@ -72,8 +72,8 @@ def cmd(args) -> int:
     from boatland.freqdomain import LandingSetup
     from boatland.inputs import check_input
     from boatland.outputs import check_outputs
-    from boatland.site import (LimitsTable, landing_bearing, operability, read_weather, relative_direction,
-                               side_by_side, table_operability)
+    from boatland.site import (LimitsTable, current_setups, landing_bearing, operability, read_weather,
+                               relative_direction, side_by_side, table_operability)
     from boatland.vessel.directions import direction_problem
 
     freq_check(args)
@@ -127,10 +127,17 @@ def cmd(args) -> int:
         setup = LandingSetup.from_scenario(scenario, db, roll_limit_deg=args.roll_limit)
         waves = scenario.sea.waves if scenario.sea is not None else None
         parts = getattr(waves, "parts", None)
-        print(f"screening {scenario.name} over {weather.describe()} at {landings.size} landing(s) …",
+        print(f"screening {scenario.name} over {weather.describe()} at {landings.size} landing(s)"
+              + (" in each sea state's current" if weather.current is not None else "") + " …",
               file=sys.stderr, flush=True)
+        extra = {}
+        if weather.current is not None:
+            extra = {"current_setup": current_setups(scenario, db, roll_limit_deg=args.roll_limit),
+                     "progress": _progress(scenario.name)}
+            if scenario.current is not None:
+                print(f"note: {scenario.name}'s own [current] is replaced by {args.weather}'s", file=sys.stderr)
         results.append(operability(
-            db, setup, weather, landings, name=scenario.name, window_hours=window,
+            db, setup, weather, landings, name=scenario.name, window_hours=window, **extra,
             accept=args.accept, statistics=args.statistics, method=args.method, sea=parts[0] if parts else None,
             water_depth=scenario.sea.water_depth if scenario.sea is not None else None,
             access_duration=args.access, mu=args.mu, thrust=args.thrust,
@@ -156,3 +163,18 @@ def cmd(args) -> int:
     if args.output is not None:
         print(f"figure: {args.output}")
     return 0
+
+
+def _progress(name: str):
+    """``progress(done, total)`` of the current's nodes: a line on stderr about every 10 %."""
+    import time
+
+    t0 = time.monotonic()
+    said = [0]
+
+    def tick(done: int, total: int) -> None:
+        if done == total or done - said[0] >= max(1, total // 10):
+            said[0] = done
+            print(f"  {name}: current node {done}/{total} ({time.monotonic() - t0:.0f} s)", file=sys.stderr,
+                  flush=True)
+    return tick

@@ -43,9 +43,15 @@ STILL_WATER = Current(speed=0.0, direction_deg=0.0, values={})
 _DV, _DX = 1e-4, 1e-6
 
 
+#: Keys of a current or wind that describe the flow, not the vessel's drag: the DragLoad does not depend on them.
+_FLOW_KEYS = frozenset({"speed", "direction_deg", "relative_direction_deg"})
+
+
 def _cached_load(db, what: str, spec) -> DragLoad:
+    """The drag load of ``spec`` on ``db``'s hull, made once per vessel and drag description (the flow's speed and
+    direction do not enter it: a site's currents share one)."""
     per_db = _LOADS.setdefault(db, {})
-    key = (what, repr(sorted(spec.values.items())))
+    key = (what, repr(sorted((k, v) for k, v in spec.values.items() if k not in _FLOW_KEYS)))
     if key not in per_db:
         per_db[key] = spec.load(db)
     return per_db[key]

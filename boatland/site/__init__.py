@@ -5,12 +5,13 @@ the operability of one or more vessels over it (:mod:`~boatland.site.operability
 :mod:`~boatland.site.figures`). ``boatland operability`` is its command."""
 
 from boatland.site.compass import global_bearing, landing_bearing, relative_direction, towards_global
-from boatland.site.limits import DIRECTION_STEP, PART_SHAPES, LimitsTable, SeaLimits, sea_limits, table_limits
+from boatland.site.limits import (DIRECTION_STEP, PART_SHAPES, LimitsTable, SeaLimits, current_setups, sea_limits,
+                                  table_limits, wave_limits)
 from boatland.site.operability import MONTHS, Operability, operability, side_by_side, table_operability
 from boatland.site.weather import Weather, read_weather
 from boatland.site.windows import Persistence, persistence, run_lengths
 
 __all__ = ["DIRECTION_STEP", "MONTHS", "PART_SHAPES", "LimitsTable", "Operability", "Persistence", "SeaLimits",
-           "Weather", "global_bearing", "landing_bearing", "operability", "persistence", "read_weather",
+           "Weather", "current_setups", "global_bearing", "landing_bearing", "operability", "persistence", "read_weather",
            "relative_direction", "run_lengths", "sea_limits", "side_by_side", "table_limits", "table_operability",
-           "towards_global"]
+           "towards_global", "wave_limits"]

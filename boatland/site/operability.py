@@ -135,7 +135,9 @@ class Operability:
             "availability": dict(zip(self.headers(), a.tolist())), "gain_of_choosing": self.gain,
             "best_landing_share": [float(self.weather.weight[self.best_landing == j].sum())
                                    for j in range(lim.landings_deg.size)],
-            "not_used": list(self.weather.carried),
+            "not_used": list(self.weather.carried) + (["current_speed", "current_direction_from_deg"]
+                                                      if lim.covered is not None and self.weather.current is not None
+                                                      else []),
         }
         if self.weather.time is not None:
             mon = self.monthly()
@@ -166,10 +168,12 @@ class Operability:
                     else "")]
         if lim.covered is not None:
             lines.append(f"  {100 * self.not_covered:.1f} % of the time outside the table (counted as not workable)"
-                         + ("; the total sea judged (the table is for one spectrum)" if self.weather.parts else ""))
+                         + ("; the total sea judged (the table is for one spectrum)" if self.weather.parts else "")
+                         + ("; the weather's current not used (the table is its campaign's)"
+                            if self.weather.current is not None else ""))
         if self.weather.carried:
-            lines.append(f"  not used: {', '.join(self.weather.carried)} (the limits are the waves'; the scenario's own "
-                         "wind and current act in every sea state)")
+            lines.append(f"  not used: {', '.join(self.weather.carried)} (the scenario's own wind, if any, acts in every "
+                         "sea state)")
         width = max(12, *(len(h) + 2 for h in head))
         row = "  {:<10}" + "".join(f"{{:>{width}}}" for _ in head)
         lines.append(row.format("", *head))
@@ -207,7 +211,7 @@ def operability(db: HydroDB, setup: LandingSetup, weather: Weather, landings_deg
                 window_hours: float | None = None, **limits_kw) -> Operability:
     """The vessel's access at the landings ``landings_deg`` (compass bearings) over ``weather`` (module
     docstring), judged by the screening; ``window_hours`` the access window of a hindcast; ``limits_kw`` as
-    :func:`boatland.site.limits.sea_limits`."""
+    :func:`boatland.site.limits.sea_limits` (``current_setup`` when the weather has a current)."""
     return _judged(name, weather, sea_limits(db, setup, weather, landings_deg, **limits_kw), window_hours)
 
 

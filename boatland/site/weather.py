@@ -12,9 +12,11 @@ CSV (``#`` comment lines allowed; a header row names the columns, in any order):
 - optional wind-sea and swell partitions: ``wind_sea_Hs``, ``wind_sea_Tp``, ``wind_sea_direction_from_deg``,
   ``swell_Hs``, ``swell_Tp``, ``swell_direction_from_deg`` (a part with Hs 0 or empty fields is absent) —
   the sea is then judged as two spectra (Grøtting 2015 §3.2.1 eq. 3.41–3.45, :mod:`boatland.site.limits`);
-- ``wind_speed`` [m/s], ``wind_direction_from_deg``, ``current_speed`` [m/s], ``current_direction_from_deg``
-  are recognised and carried, but the operability judges the waves only (the scenario's own wind and current,
-  if any, act in every sea state): said on reading.
+- ``current_speed`` [m/s] and ``current_direction_from_deg`` (compass, where the water comes from — the
+  site frame's one convention; an oceanographic "towards" direction is this + 180°): each sea state is judged in
+  its own current (:mod:`boatland.site.limits`);
+- ``wind_speed`` [m/s], ``wind_direction_from_deg`` are recognised and carried, but not used yet (the
+  scenario's own wind, if any, acts in every sea state): said.
 
 netCDF (netCDF-4, i.e. HDF5, read with h5py): one-dimensional variables over ``time`` with the names above, or
 the CF standard names ``sea_surface_wave_significant_height``,
@@ -27,6 +29,7 @@ sea state is refused, naming its time.
 from __future__ import annotations
 
 import csv
+import dataclasses
 import math
 import re
 import warnings
@@ -43,8 +46,10 @@ SUM_TOLERANCE = 0.01
 
 #: The partitions a weather file may hold (name → column prefix).
 PARTS = ("wind_sea", "swell")
-#: Columns recognised but not used by the operability yet (waves only).
-CARRIED = ("wind_speed", "wind_direction_from_deg", "current_speed", "current_direction_from_deg")
+#: The current's columns (speed [m/s], compass direction it comes from [deg]).
+CURRENT = ("current_speed", "current_direction_from_deg")
+#: Columns recognised but not used by the operability yet.
+CARRIED = ("wind_speed", "wind_direction_from_deg")
 _CF = {"Hs": "sea_surface_wave_significant_height",
        "Tp": "sea_surface_wave_period_at_variance_spectral_density_maximum",
        "direction_from_deg": "sea_surface_wave_from_direction"}
@@ -67,8 +72,10 @@ class Weather:
     parts : dict
         Partitions present (``"wind_sea"``, ``"swell"``) → (Hs, Tp, from_deg) arrays (n,); Hs 0 where a row
         has none.
+    current : tuple of ndarray or None
+        (speed [m/s], compass direction it comes from [deg]) per row, when the weather has them.
     carried : tuple of str
-        Columns read but not used (wind, current).
+        Columns read but not used (wind).
     source : str
     """
 
@@ -79,6 +86,7 @@ class Weather:
     time: np.ndarray | None = None
     step_hours: float | None = None
     parts: dict = field(default_factory=dict)
+    current: tuple | None = None
     carried: tuple = ()
     source: str = "<weather>"
 
@@ -101,7 +109,7 @@ class Weather:
         return self.time.astype("datetime64[Y]").astype(int) + 1970
 
     @classmethod
-    def scatter(cls, Hs, Tp, from_deg, occurrence, source: str = "<scatter>", parts=None) -> "Weather":
+    def scatter(cls, Hs, Tp, from_deg, occurrence, source: str = "<scatter>", parts=None, current=None) -> "Weather":
         """A scatter diagram from arrays (checked as a file's rows; occurrences normalised)."""
         H, T, d, p = _columns(source, Hs=Hs, Tp=Tp, direction_from_deg=from_deg, occurrence=occurrence)
         if np.any(p < 0):
@@ -115,10 +123,11 @@ class Weather:
             warnings.warn(f"{source}: occurrences sum to {total:.6g}, not 1: normalised (read as relative "
                           "frequencies, e.g. hours or counts)", BoatlandWarning, stacklevel=2)
         return cls(Hs=H, Tp=T, from_deg=d % 360.0, weight=p / total, parts=_parts(source, parts, H.size),
-                   source=source)
+                   current=_current(source, current, H.size), source=source)
 
     @classmethod
-    def series(cls, time, Hs, Tp, from_deg, source: str = "<hindcast>", parts=None, carried=()) -> "Weather":
+    def series(cls, time, Hs, Tp, from_deg, source: str = "<hindcast>", parts=None, current=None,
+               carried=()) -> "Weather":
         """A hindcast from arrays: ``time`` (datetime64 or ISO strings), regular and increasing."""
         t = np.asarray(time).astype("datetime64[s]")
         H, T, d = _columns(source, Hs=Hs, Tp=Tp, direction_from_deg=from_deg)
@@ -126,15 +135,23 @@ class Weather:
             raise BoatlandInputError(f"{source}: {t.size} times for {H.size} sea states")
         step = _regular_step(source, t)
         return cls(Hs=H, Tp=T, from_deg=d % 360.0, weight=np.full(H.size, 1.0 / H.size), time=t,
-                   step_hours=step / 3600.0, parts=_parts(source, parts, H.size), carried=tuple(carried),
-                   source=source)
+                   step_hours=step / 3600.0, parts=_parts(source, parts, H.size),
+                   current=_current(source, current, H.size), carried=tuple(carried), source=source)
 
     def rotated(self, angle_deg: float) -> "Weather":
         """Every direction turned by ``angle_deg`` (the site turned; for tests of the compass)."""
         parts = {k: (h, t, (d + angle_deg) % 360.0) for k, (h, t, d) in self.parts.items()}
-        return Weather(Hs=self.Hs, Tp=self.Tp, from_deg=(self.from_deg + angle_deg) % 360.0, weight=self.weight,
-                       time=self.time, step_hours=self.step_hours, parts=parts, carried=self.carried,
-                       source=self.source)
+        current = None if self.current is None else (self.current[0], (self.current[1] + angle_deg) % 360.0)
+        return dataclasses.replace(self, from_deg=(self.from_deg + angle_deg) % 360.0, parts=parts, current=current)
+
+    def take(self, rows) -> "Weather":
+        """The sea states ``rows`` (indices) alone, as a scatter of their weights (for judging a subset)."""
+        i = np.asarray(rows, dtype=int)
+        parts = {k: tuple(a[i] for a in v) for k, v in self.parts.items()}
+        current = None if self.current is None else tuple(a[i] for a in self.current)
+        return dataclasses.replace(self, Hs=self.Hs[i], Tp=self.Tp[i], from_deg=self.from_deg[i],
+                                   weight=self.weight[i], time=None if self.time is None else self.time[i],
+                                   parts=parts, current=current)
 
     def describe(self) -> str:
         """One line: what the weather is."""
@@ -181,6 +198,20 @@ def _parts(source: str, parts, n: int) -> dict:
                                          f"part with {name}_Hs = {H[bad[0]]:g} (a peak period > 0, a direction)")
         out[name] = (np.where(absent, 0.0, H), np.where(absent, 1.0, T), np.where(absent, 0.0, d) % 360.0)
     return out
+
+
+def _current(source: str, current, n: int):
+    if current is None:
+        return None
+    U, d = (np.atleast_1d(np.asarray(c, dtype=float)) for c in current)
+    if not (U.shape == d.shape == (n,)):
+        raise BoatlandInputError(f"{source}: the current has {U.size} rows for {n}")
+    bad = np.flatnonzero(~np.isfinite(U) | (U < 0) | ~np.isfinite(d))
+    if bad.size:
+        i = int(bad[0])
+        raise BoatlandInputError(f"{source}: row {i + 1}: current_speed = {U[i]:g}, current_direction_from_deg = "
+                                 f"{d[i]:g}: need a speed ≥ 0 m/s and a direction")
+    return U, d % 360.0
 
 
 def _regular_step(source: str, t: np.ndarray, lines=None) -> float:
@@ -246,13 +277,16 @@ def _read_csv(path: Path) -> Weather:
         if any(c not in header for c in cols):
             raise BoatlandInputError(f"{at}: partition {p}: need all of {', '.join(cols)}")
     carried = tuple(c for c in CARRIED if c in header)
+    has_current = [c for c in CURRENT if c in header]
+    if has_current and len(has_current) != len(CURRENT):
+        raise BoatlandInputError(f"{at}: the current needs both {' and '.join(CURRENT)}")
     numeric = need + ([] if kind == "time" else ["occurrence"]) + [c for cs in part_cols.values() for c in cs] \
-        + list(carried)
+        + list(carried) + has_current
     idx = {h: i for i, h in enumerate(header)}
     n = len(rows) - 1
     data = {k: np.empty(n) for k in numeric}
     times = []
-    optional = {c for cs in part_cols.values() for c in cs} | set(carried)
+    optional = {c for cs in part_cols.values() for c in cs} | set(carried) | set(has_current)
     for r, ((lineno, _), row) in enumerate(zip(lines[1:], rows[1:])):
         if len(row) != len(header):
             raise BoatlandInputError(f"{path}: line {lineno}: {len(row)} fields for {len(header)} columns")
@@ -276,13 +310,18 @@ def _read_csv(path: Path) -> Weather:
         if kind == "time":
             times.append(_time(path, lineno, row[idx["time"]]))
     parts = {p: tuple(data[c] for c in cols) for p, cols in part_cols.items()}
+    current = tuple(data[c] for c in CURRENT) if has_current else None
+    if current is not None:
+        bad = np.flatnonzero(~np.isfinite(current[0]) | ~np.isfinite(current[1]))
+        if bad.size:
+            raise BoatlandInputError(f"{path}: line {lines[bad[0] + 1][0]}: the current's speed or direction is empty")
     if kind == "occurrence":
         return Weather.scatter(data["Hs"], data["Tp"], data["direction_from_deg"], data["occurrence"],
-                               source=str(path), parts=parts)
+                               source=str(path), parts=parts, current=current)
     t = np.array(times, dtype="datetime64[s]")
     _regular_step(str(path), t, [ln for ln, _ in lines[1:]])
     return Weather.series(t, data["Hs"], data["Tp"], data["direction_from_deg"], source=str(path), parts=parts,
-                          carried=carried)
+                          current=current, carried=carried)
 
 
 _ISO = re.compile(r"^\d{4}-\d{2}-\d{2}([T ]\d{2}(:\d{2}(:\d{2}(\.\d+)?)?)?)?Z?$")
@@ -350,8 +389,12 @@ def _read_netcdf(path: Path) -> Weather:
                                              f"{p}_direction_from_deg")
                 parts[p] = tuple(_decoded(v) for v in vs)
         carried = tuple(c for c in CARRIED if c in f)
+        cur = [find(c, required=False) for c in CURRENT]
+        if any(v is not None for v in cur) and any(v is None for v in cur):
+            raise BoatlandInputError(f"{path}: the current needs both {' and '.join(CURRENT)}")
+        current = tuple(_decoded(v) for v in cur) if cur[0] is not None else None
     return Weather.series(t, cols["Hs"], cols["Tp"], cols["direction_from_deg"], source=str(path), parts=parts,
-                          carried=carried)
+                          current=current, carried=carried)
 
 
 def _decoded(var) -> np.ndarray:
