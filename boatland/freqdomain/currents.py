@@ -13,7 +13,8 @@ Choosing the landing side. A turbine's boat landings face different ways; the sk
 approach puts the current where the vessel tolerates it best. With the waves' relative direction held at the
 scenario's, the best side in a current of speed U is the relative current direction with the highest limiting
 Hs (:meth:`CurrentSweep.advice`). Both turn together with the side in reality (the waves come from one
-direction too): ``boatland operability`` weighs both over a site's weather.
+direction too): ``boatland operability`` weighs both over a site's weather, each sea state in its own current
+(:mod:`boatland.site.current`).
 """
 
 from __future__ import annotations

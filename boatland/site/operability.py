@@ -4,7 +4,7 @@ availability of access from a 1957–2010 NORA10 hindcast, all year and per wint
 
 For a vessel (a scenario) and landings at compass bearings φ_1 … φ_L, each sea state i of weight w_i (its
 occurrence, or one step of a hindcast) gets a margin M_il = H_lim,il / H_s,i at each landing
-(:func:`boatland.site.limits.sea_limits`). Then
+(:func:`boatland.site.current.sea_limits`). Then
 
 .. math:: A_l = \sum_i w_i [M_{il} \ge 1], \qquad A_{best} = \sum_i w_i [\max_l M_{il} \ge 1] \ge \max_l A_l ,
 
@@ -23,7 +23,9 @@ import numpy as np
 
 from boatland.freqdomain.landing import LandingSetup
 from boatland.freqdomain.statistics import risk_in_words
-from boatland.site.limits import LimitsTable, SeaLimits, sea_limits, table_limits
+from boatland.site.current import sea_limits
+from boatland.site.limits import SeaLimits
+from boatland.site.tables import LimitsTable, table_limits
 from boatland.site.weather import Weather
 from boatland.site.windows import Persistence, persistence
 from boatland.vessel.database import HydroDB
@@ -211,13 +213,13 @@ def operability(db: HydroDB, setup: LandingSetup, weather: Weather, landings_deg
                 window_hours: float | None = None, **limits_kw) -> Operability:
     """The vessel's access at the landings ``landings_deg`` (compass bearings) over ``weather`` (module
     docstring), judged by the screening; ``window_hours`` the access window of a hindcast; ``limits_kw`` as
-    :func:`boatland.site.limits.sea_limits` (``current_setup`` when the weather has a current)."""
+    :func:`boatland.site.current.sea_limits` (``current_setup`` when the weather has a current)."""
     return _judged(name, weather, sea_limits(db, setup, weather, landings_deg, **limits_kw), window_hours)
 
 
 def table_operability(table: LimitsTable, weather: Weather, landings_deg, *, name: str | None = None,
                       window_hours: float | None = None) -> Operability:
-    """The same judged by a time-domain limits table (:class:`~boatland.site.limits.LimitsTable`: a rare-event
+    """The same judged by a time-domain limits table (:class:`~boatland.site.tables.LimitsTable`: a rare-event
     campaign's limiting Hs for its incident, e.g. a slide)."""
     return _judged(name or f"{table.name} ({table.incident}, time domain)", weather,
                    table_limits(table, weather, landings_deg), window_hours)

@@ -14,7 +14,7 @@ CSV (``#`` comment lines allowed; a header row names the columns, in any order):
   the sea is then judged as two spectra (Grøtting 2015 §3.2.1 eq. 3.41–3.45, :mod:`boatland.site.limits`);
 - ``current_speed`` [m/s] and ``current_direction_from_deg`` (compass, where the water comes from — the
   site frame's one convention; an oceanographic "towards" direction is this + 180°): each sea state is judged in
-  its own current (:mod:`boatland.site.limits`);
+  its own current (:mod:`boatland.site.current`);
 - ``wind_speed`` [m/s], ``wind_direction_from_deg`` are recognised and carried, but not used yet (the
   scenario's own wind, if any, acts in every sea state): said.
 

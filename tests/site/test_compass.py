@@ -7,7 +7,7 @@ import pytest
 
 from boatland.freqdomain import screening_grid
 from boatland.site import Weather, global_bearing, landing_bearing, operability, relative_direction, towards_global
-from boatland.site.limits import sea_limits
+from boatland.site import sea_limits
 
 
 def test_a_wave_from_north_meets_the_bow_of_a_vessel_heading_north():

@@ -1,4 +1,4 @@
-"""Each sea state in its own current (boatland.site.limits with a weather's current): on a node the limit is the
+"""Each sea state in its own current (boatland.site.current): on a node the limit is the
 screening's in that current, with no current the scenario's without one, between nodes within a measured
 interpolation error; the current turns with the site; read from CSV."""
 
@@ -10,7 +10,7 @@ import pytest
 from boatland.errors import BoatlandInputError
 from boatland.freqdomain import LandingSetup, screening_grid
 from boatland.site import Weather, current_setups, operability, read_weather, sea_limits
-from boatland.site.limits import CURRENT_DIRECTION_STEP, CURRENT_SPEED_STEP
+from boatland.site.current import CURRENT_DIRECTION_STEP, CURRENT_SPEED_STEP
 
 pytestmark = pytest.mark.slow          # a screening per node of the current: tens of seconds
 

@@ -1,4 +1,4 @@
-"""Operability judged by a rare-event campaign's time-domain limits (boatland.site.limits.LimitsTable): a real
+"""Operability judged by a rare-event campaign's time-domain limits (boatland.site.tables.LimitsTable): a real
 ISEE campaign store (ctv24, 2 Tp × 3 headings, a short access: seconds), read back; the table's limits at its
 cases, linear between them, mirrored port/starboard, not covered outside; the CLI with the store beside the
 screening."""

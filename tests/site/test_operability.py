@@ -9,7 +9,7 @@ import pytest
 from boatland.freqdomain import incident_probability, screening_grid, slip_transfer
 from boatland.freqdomain.statistics import correlation_matrix, distinct_events, unit_spectra
 from boatland.site import PART_SHAPES, Weather, operability, read_weather, side_by_side
-from boatland.site.limits import sea_limits
+from boatland.site import sea_limits
 from tests.site.conftest import HINDCAST
 
 
