@@ -35,7 +35,9 @@ def add_parser(sub) -> None:
                     "side over the same weather. Directions are compass degrees from true North: the waves come "
                     "FROM direction_from_deg; a landing's bearing is the direction from the tower's axis to it "
                     "(the vessel heads the opposite way). WEATHER: CSV (time or occurrence, Hs, Tp, "
-                    "direction_from_deg; see scenarios/weather/) or netCDF-4.")
+                    "direction_from_deg; optionally wind-sea and swell partitions, and current_speed and "
+                    "current_direction_from_deg — each sea state is then judged in its own current; see "
+                    "scenarios/example_hindcast.csv) or netCDF-4.")
     set_option(op)
     op.add_argument("scenarios", nargs="+", type=shipped_or_path("scenario"), metavar="SCENARIO",
                     help="scenario file (TOML) or the name of a shipped one, e.g. ctv_landing, judged by the screening "
@@ -43,7 +45,7 @@ def add_parser(sub) -> None:
                          "\"isee\"), judged by its time-domain limits for its incident, e.g. a slide; several: side "
                          "by side")
     op.add_argument("weather", type=Path, metavar="WEATHER",
-                    help="scatter diagram or hindcast (CSV or netCDF), e.g. scenarios/weather/example_hindcast.csv")
+                    help="scatter diagram or hindcast (CSV or netCDF), e.g. scenarios/example_hindcast.csv")
     op.add_argument("--landing", type=in_range(0.0, 360.0, lo_open=False, hi_open=True, unit="°"), action="append",
                     metavar="DEG",
                     dest="landings",
