@@ -113,7 +113,7 @@ def cmd(args) -> int:
     if len(set(np.round(landings, 6))) != landings.size:
         raise BoatlandInputError("--landing: the same bearing is given twice")
     window = args.window if args.window is not None else DEFAULT_WINDOW_HOURS
-    froms = [weather.from_deg] + ([] if args.one_spectrum else [d for _, _, d in weather.parts.values()])
+    froms = [weather.from_deg] + ([] if args.one_spectrum else [d[h > 0] for h, _, d in weather.parts.values()])
     results = []
     for scenario, db in loaded:
         if scenario is None:

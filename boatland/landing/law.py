@@ -39,8 +39,8 @@ import numpy as np
 
 from boatland.vessel.database import HydroDB, skew
 
-__all__ = ["ContactLaw", "LandedModes", "SteadyLoad", "landed_modes", "normal_follows", "point_map",
-           "preload_stiffness", "solve_saddle", "static_preload", "tangents"]
+__all__ = ["ContactLaw", "LandedModes", "NoStaticEquilibrium", "SteadyLoad", "landed_modes", "normal_follows",
+           "point_map", "preload_stiffness", "solve_saddle", "static_preload", "tangents"]
 
 _EX = np.array([1.0, 0.0, 0.0])
 
@@ -309,6 +309,11 @@ class ContactLaw:
         return J
 
 
+class NoStaticEquilibrium(ValueError):
+    """The landing cannot hold the push (and the steady loads) statically: :func:`static_preload` found no
+    equilibrium (a ValueError, as before it had a class of its own)."""
+
+
 def static_preload(C: np.ndarray, law: ContactLaw, thrust: float, thrust_position, direction=_EX,
                    steady: SteadyLoad | None = None):
     r"""Static equilibrium on the landing under the follower thrust: (x⁰, J⁰, K_g(J⁰)).
@@ -323,7 +328,7 @@ def static_preload(C: np.ndarray, law: ContactLaw, thrust: float, thrust_positio
 
     Raises
     ------
-    ValueError
+    NoStaticEquilibrium
         The landing cannot hold the thrust statically, or the iteration does not converge.
     """
     rT = np.asarray(thrust_position, dtype=float).reshape(3)
@@ -339,9 +344,10 @@ def static_preload(C: np.ndarray, law: ContactLaw, thrust: float, thrust_positio
     for _ in range(50):
         xs, ls, res = solve_saddle((C + K - Kg).astype(complex), pins, F_T[:, None].astype(complex))
         if res > 1e-8:
-            raise ValueError(f"the landing cannot hold the thrust statically (relative residual {res:.2g}): a force "
-                             "or moment about a direction with neither restoring nor a restraint — e.g. a yaw moment "
-                             "about a single fender point, or a normal without a spring")
+            raise NoStaticEquilibrium(
+                f"the landing cannot hold the thrust statically (relative residual {res:.2g}): a force "
+                "or moment about a direction with neither restoring nor a restraint — e.g. a yaw moment "
+                "about a single fender point, or a normal without a spring")
         x0 = xs[:, 0].real
         J_new = law.reactions(x0, ls[:, 0].real, 0.0).real
         change = np.max(np.abs(J_new - J0)) / max(np.max(np.abs(J_new)), 1e-300)
@@ -353,8 +359,8 @@ def static_preload(C: np.ndarray, law: ContactLaw, thrust: float, thrust_positio
         Kg = preload_stiffness(thrust, rT, J0, law.points, eT) + law.geometric_stiffness(J0)
         if done:
             return x0, J0, Kg
-    raise ValueError("the static equilibrium under the thrust did not converge: the preload's geometric stiffness "
-                     "is comparable with the restoring (thrust far too large for this landing)")
+    raise NoStaticEquilibrium("the static equilibrium under the thrust did not converge: the preload's geometric "
+                              "stiffness is comparable with the restoring (thrust far too large for this landing)")
 
 
 @dataclass(frozen=True, eq=False)

@@ -19,8 +19,9 @@ import dataclasses
 import numpy as np
 
 from boatland.freqdomain.landing import LandingSetup
+from boatland.landing.law import NoStaticEquilibrium
 from boatland.site.compass import relative_direction
-from boatland.site.limits import SeaLimits, relative_directions, wave_limits
+from boatland.site.limits import SeaLimits, relative_directions, two_spectra_rows, wave_limits
 from boatland.site.weather import Weather
 from boatland.vessel.database import HydroDB
 
@@ -92,8 +93,10 @@ def _in_current(db: HydroDB, weather: Weather, L: np.ndarray, current_setup, pro
     k0 = np.floor(U / dU + 1e-9).astype(int)
     u0, u1 = k0 * dU, (k0 + 1) * dU
     wu = np.clip((U ** 2 - u0 ** 2) / (u1 ** 2 - u0 ** 2), 0.0, 1.0)                 # (n,)
-    j0 = np.floor(theta / dT + 1e-9).astype(int) % nd
-    wt = np.clip((theta - j0 * dT) / dT, 0.0, 1.0)                                    # (n, L)
+    t = theta / dT
+    j0 = np.floor(t + 1e-9).astype(int)
+    wt = np.clip(t - j0, 0.0, 1.0)                                                    # (n, L)
+    j0 = j0 % nd
     corners = []                                   # (k (n,), j (n, L), weight (n, L))
     for dk, dj, w in ((0, 0, (1 - wu)[:, None] * (1 - wt)), (0, 1, (1 - wu)[:, None] * wt),
                       (1, 0, wu[:, None] * (1 - wt)), (1, 1, wu[:, None] * wt)):
@@ -112,12 +115,13 @@ def _in_current(db: HydroDB, weather: Weather, L: np.ndarray, current_setup, pro
         for ck, cj, w in corners:
             need |= (ck == k) & (cj == j) & (w > 0)
         rows = np.flatnonzero(need.any(axis=1))
+        node_setup = current_setup(k * dU, j * dT)       # a scenario that cannot take this current says so here
         try:
-            lim = wave_limits(db, current_setup(k * dU, j * dT), weather.take(rows), L, **kw)
+            lim = wave_limits(db, node_setup, weather.take(rows), L, **kw)
             node_H, node_gov = lim.Hs_limit, lim.governing
             if base is None:
                 base = lim
-        except ValueError as exc:        # no static equilibrium on the landing in this current: limit 0
+        except NoStaticEquilibrium as exc:        # the landing cannot hold in this current: limit 0
             failed.append(f"{k * dU:g} m/s towards {j * dT:g}° ({exc})")
             node_H = np.zeros((rows.size, L.size))
             node_gov = np.full((rows.size, L.size), "no static equilibrium", dtype=object)
@@ -130,10 +134,7 @@ def _in_current(db: HydroDB, weather: Weather, L: np.ndarray, current_setup, pro
             gov[rows[r][better], c[better]] = node_gov[r[better], c[better]]
         if progress is not None:
             progress(done, len(nodes))
-    two = np.zeros(n, bool)
-    if kw.get("spectra", "auto") != "one":
-        for Hp, _, _ in weather.parts.values():
-            two |= Hp > 0
+    two = two_spectra_rows(weather, kw.get("spectra", "auto"))
     hs = weather.Hs.copy()
     if two.any():
         hs[two] = np.sqrt(sum(np.where(two, Hp, 0.0) ** 2 for Hp, _, _ in weather.parts.values()))[two]

@@ -17,7 +17,8 @@ Gaussian seas; each response's spectral moments are the sum of the parts',
 sea scaled as a whole, its mix kept: the moments per unit :math:`H_{s}^2 = \sum_p H_{s,p}^2` go into the same
 bisection, and the sea state is workable when its :math:`H_s \le H_{lim}`. Shapes (Grøtting 2015, Appendix,
 ``doublespec.m`` and §4.2 — the SIMA runs): the wind sea a Pierson–Moskowitz spectrum (γ = 1), the swell a
-JONSWAP of γ = 5. A row without either part is judged as one spectrum.
+JONSWAP of γ = 5. A row without either part, or whose parts do not add up to its Hs (within
+:data:`PARTS_TOLERANCE`: a part missing), is judged as one spectrum of its total.
 
 The margin of a sea state, :math:`H_{lim}/H_s` (> 1 workable), ranks the landings (the best landing is the
 one with the largest margin). With one spectrum it is the screening's limit over the sea's Hs, so a scatter
@@ -47,10 +48,15 @@ from boatland.site.compass import relative_direction
 from boatland.site.weather import Weather
 from boatland.vessel.database import HydroDB
 
-__all__ = ["DIRECTION_STEP", "PART_SHAPES", "SeaLimits", "relative_directions", "margin_text", "wave_limits"]
+__all__ = ["DIRECTION_STEP", "PARTS_TOLERANCE", "PART_SHAPES", "SeaLimits", "margin_text", "relative_directions",
+           "two_spectra_rows", "wave_limits"]
 
 #: Relative directions are rounded to this [deg]: hindcasts (NORA10, ERA5) give directions to 1° or coarser.
 DIRECTION_STEP = 1.0
+
+#: A row's partitions must add up to its total Hs within this (relative, √ΣHs_p² against Hs) to be judged as two
+#: spectra; else a part is missing (a gap in the partitioned data) and the row is judged as one spectrum of its total.
+PARTS_TOLERANCE = 0.1
 
 #: The partitions' spectral shapes (Grøtting 2015, Appendix ``doublespec.m``: gmaW = 1, gmaS = 5).
 PART_SHAPES = {"wind_sea": SpectrumPart(Hs=1.0, Tp=6.0, kind="pm"),
@@ -106,6 +112,16 @@ class SeaLimits:
             return self.margin >= 1.0
 
 
+def two_spectra_rows(weather: Weather, spectra: str = "auto") -> np.ndarray:
+    """(n,) bool: the rows judged as wind sea + swell — those with partitions whose heights add up to the row's
+    Hs within :data:`PARTS_TOLERANCE` (a row with a part missing would otherwise drop part of its sea, on the unsafe
+    side); none with ``spectra="one"``."""
+    if spectra == "one" or not weather.parts:
+        return np.zeros(weather.n, bool)
+    sum2 = sum(np.where(H > 0, H, 0.0) ** 2 for H, _, _ in weather.parts.values())
+    return (sum2 > 0) & (np.abs(np.sqrt(sum2) - weather.Hs) <= PARTS_TOLERANCE * weather.Hs)
+
+
 def relative_directions(beta):
     """Relative directions [deg] rounded to :data:`DIRECTION_STEP`, in [0, 360)."""
     return np.mod(np.round(np.asarray(beta, dtype=float) / DIRECTION_STEP) * DIRECTION_STEP, 360.0)
@@ -146,9 +162,7 @@ def wave_limits(db: HydroDB, setup: LandingSetup, weather: Weather, landings_deg
     L = np.atleast_1d(np.asarray(landings_deg, dtype=float)) % 360.0
     n = weather.n
     parts = {} if spectra == "one" else weather.parts
-    two = np.zeros(n, bool)
-    for H, _, _ in parts.values():
-        two |= H > 0
+    two = two_spectra_rows(weather, spectra)
     # the (Tp, β, Hs², shape) components of each row × landing: one for a one-spectrum row, one per part else
     comps = []                                      # (row index, Tp, β (n_sel, L), Hs², shape name)
     one = ~two

@@ -127,6 +127,7 @@ class Operability:
         """Everything for ``--json``."""
         lim = self.limits
         a = self.availability()
+        judged = np.isfinite(lim.margin).any(axis=1)       # a sea state outside a table at every landing: none best
         out = {
             "scenario": self.name, "weather": self.weather.source, "sea_states": self.weather.n,
             "hindcast": self.weather.time is not None, "step_hours": self.weather.step_hours,
@@ -135,7 +136,7 @@ class Operability:
             "statistics": lim.statistics, "method": lim.method, "mu": lim.mu, "thrust": lim.thrust,
             "limits": lim.source, "not_covered": self.not_covered,
             "availability": dict(zip(self.headers(), a.tolist())), "gain_of_choosing": self.gain,
-            "best_landing_share": [float(self.weather.weight[self.best_landing == j].sum())
+            "best_landing_share": [float(self.weather.weight[(self.best_landing == j) & judged].sum())
                                    for j in range(lim.landings_deg.size)],
             "not_used": list(self.weather.carried) + (["current_speed", "current_direction_from_deg"]
                                                       if lim.covered is not None and self.weather.current is not None

@@ -101,6 +101,16 @@ class LimitsTable:
             raise BoatlandInputError(f"{path}: its limits are not per peak period and relative direction (its "
                                      "campaign sweeps neither sea.Tp nor sea.relative_direction_deg, or holds "
                                      "them in another form)")
+        others = [c for c in lim.dtype.names if c.startswith("axis: ") and c not in
+                  ("axis: sea.Tp", "axis: sea.relative_direction_deg")
+                  and np.unique(np.asarray(lim[c], dtype=float)).size > 1]
+        if others:
+            raise BoatlandInputError(f"{path}: its campaign sweeps {', '.join(c[6:] for c in others)} besides Tp and "
+                                     "direction: one table per setting is needed (a campaign per setting, or one "
+                                     "with those held fixed)")
+        pairs = np.round(np.c_[T, b], 9)
+        if np.unique(pairs, axis=0).shape[0] != pairs.shape[0]:
+            raise BoatlandInputError(f"{path}: its limits repeat a (Tp, direction): not one table")
         uT, ub = np.unique(T), np.unique(b)
         H = np.full((uT.size, ub.size), np.nan)
         H[np.searchsorted(uT, T), np.searchsorted(ub, b)] = np.asarray(lim["limiting Hs"], dtype=float)
@@ -132,8 +142,11 @@ class LimitsTable:
         nb = self.beta_deg.size
         j1 = np.searchsorted(self.beta_deg, b, side="left") % nb
         j0 = (j1 - 1) % nb
-        exact = np.isclose(self.beta_deg[j1], b, atol=1e-9, rtol=0)
-        j0 = np.where(exact, j1, j0)
+        exact1 = np.isclose(np.mod(self.beta_deg[j1] - b + 180.0, 360.0) - 180.0, 0.0, atol=1e-9)
+        exact0 = np.isclose(np.mod(b - self.beta_deg[j0] + 180.0, 360.0) - 180.0, 0.0, atol=1e-9)
+        j1 = np.where(exact0, j0, j1)
+        j0 = np.where(exact1, j1, j0)
+        exact = exact0 | exact1
         gap = np.mod(self.beta_deg[j1] - self.beta_deg[j0], 360.0)
         off = np.mod(b - self.beta_deg[j0], 360.0)
         with np.errstate(invalid="ignore", divide="ignore"):

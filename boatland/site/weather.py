@@ -109,8 +109,10 @@ class Weather:
         return self.time.astype("datetime64[Y]").astype(int) + 1970
 
     @classmethod
-    def scatter(cls, Hs, Tp, from_deg, occurrence, source: str = "<scatter>", parts=None, current=None) -> "Weather":
-        """A scatter diagram from arrays (checked as a file's rows; occurrences normalised)."""
+    def scatter(cls, Hs, Tp, from_deg, occurrence, source: str = "<scatter>", parts=None, current=None,
+                lines=None) -> "Weather":
+        """A scatter diagram from arrays (checked as a file's rows; occurrences normalised; ``lines``: each row's
+        line in its file, for the messages)."""
         H, T, d, p = _columns(source, Hs=Hs, Tp=Tp, direction_from_deg=from_deg, occurrence=occurrence)
         if np.any(p < 0):
             i = int(np.flatnonzero(p < 0)[0])
@@ -122,21 +124,22 @@ class Weather:
         if abs(total - 1.0) > SUM_TOLERANCE:
             warnings.warn(f"{source}: occurrences sum to {total:.6g}, not 1: normalised (read as relative "
                           "frequencies, e.g. hours or counts)", BoatlandWarning, stacklevel=2)
-        return cls(Hs=H, Tp=T, from_deg=d % 360.0, weight=p / total, parts=_parts(source, parts, H.size),
-                   current=_current(source, current, H.size), source=source)
+        return cls(Hs=H, Tp=T, from_deg=d % 360.0, weight=p / total, parts=_parts(source, parts, H.size, lines),
+                   current=_current(source, current, H.size, lines), source=source)
 
     @classmethod
     def series(cls, time, Hs, Tp, from_deg, source: str = "<hindcast>", parts=None, current=None,
-               carried=()) -> "Weather":
-        """A hindcast from arrays: ``time`` (datetime64 or ISO strings), regular and increasing."""
+               carried=(), lines=None) -> "Weather":
+        """A hindcast from arrays: ``time`` (datetime64 or ISO strings), regular and increasing (``lines``: each
+        row's line in its file, for the messages)."""
         t = np.asarray(time).astype("datetime64[s]")
         H, T, d = _columns(source, Hs=Hs, Tp=Tp, direction_from_deg=from_deg)
         if t.shape != H.shape:
             raise BoatlandInputError(f"{source}: {t.size} times for {H.size} sea states")
-        step = _regular_step(source, t)
+        step = _regular_step(source, t, lines)
         return cls(Hs=H, Tp=T, from_deg=d % 360.0, weight=np.full(H.size, 1.0 / H.size), time=t,
-                   step_hours=step / 3600.0, parts=_parts(source, parts, H.size),
-                   current=_current(source, current, H.size), carried=tuple(carried), source=source)
+                   step_hours=step / 3600.0, parts=_parts(source, parts, H.size, lines),
+                   current=_current(source, current, H.size, lines), carried=tuple(carried), source=source)
 
     def rotated(self, angle_deg: float) -> "Weather":
         """Every direction turned by ``angle_deg`` (the site turned; for tests of the compass)."""
@@ -182,7 +185,12 @@ def _columns(source: str, **cols) -> list[np.ndarray]:
     return out
 
 
-def _parts(source: str, parts, n: int) -> dict:
+def _where(i: int, lines) -> str:
+    """Where row ``i`` is: its file line when known, else its row number."""
+    return f"line {lines[i]}" if lines is not None else f"row {i + 1}"
+
+
+def _parts(source: str, parts, n: int, lines=None) -> dict:
     out = {}
     for name, cols in (parts or {}).items():
         if name not in PARTS:
@@ -194,13 +202,13 @@ def _parts(source: str, parts, n: int) -> dict:
         for col, a in ((f"{name}_Tp", T), (f"{name}_direction_from_deg", d)):
             bad = np.flatnonzero(~absent & (~np.isfinite(a) | ((a <= 0) if col.endswith("Tp") else False)))
             if bad.size:
-                raise BoatlandInputError(f"{source}: row {bad[0] + 1}: {col} = {a[bad[0]]:g} is not valid for a "
+                raise BoatlandInputError(f"{source}: {_where(int(bad[0]), lines)}: {col} = {a[bad[0]]:g} is not valid for a "
                                          f"part with {name}_Hs = {H[bad[0]]:g} (a peak period > 0, a direction)")
         out[name] = (np.where(absent, 0.0, H), np.where(absent, 1.0, T), np.where(absent, 0.0, d) % 360.0)
     return out
 
 
-def _current(source: str, current, n: int):
+def _current(source: str, current, n: int, lines=None):
     if current is None:
         return None
     U, d = (np.atleast_1d(np.asarray(c, dtype=float)) for c in current)
@@ -209,7 +217,7 @@ def _current(source: str, current, n: int):
     bad = np.flatnonzero(~np.isfinite(U) | (U < 0) | ~np.isfinite(d))
     if bad.size:
         i = int(bad[0])
-        raise BoatlandInputError(f"{source}: row {i + 1}: current_speed = {U[i]:g}, current_direction_from_deg = "
+        raise BoatlandInputError(f"{source}: {_where(i, lines)}: current_speed = {U[i]:g}, current_direction_from_deg = "
                                  f"{d[i]:g}: need a speed ≥ 0 m/s and a direction")
     return U, d % 360.0
 
@@ -218,11 +226,12 @@ def _regular_step(source: str, t: np.ndarray, lines=None) -> float:
     if t.size < 2:
         raise BoatlandInputError(f"{source}: a hindcast needs at least two times")
     dt = np.diff(t).astype(np.int64)
-    step = int(dt[0])
+    steps, counts = np.unique(dt, return_counts=True)
+    step = int(steps[np.argmax(counts)])                # the series' own step: the most common one
     bad = np.flatnonzero(dt != step)
     if step <= 0 or bad.size:
         i = 0 if step <= 0 else int(bad[0])
-        where = f"line {lines[i + 1]}" if lines is not None else f"row {i + 2}"
+        where = _where(i + 1, lines)
         raise BoatlandInputError(f"{source}: {where}: time {t[i + 1]} is {dt[i] / 3600:g} h after the previous one, "
                                  f"not {step / 3600:g} h: a hindcast must be a regular, increasing series (fill or "
                                  "cut the gap)")
@@ -248,7 +257,7 @@ def _read_csv(path: Path) -> Weather:
 
     raw = read_input(path, "weather file", "text")
     try:
-        text = raw.decode("utf-8")
+        text = raw.decode("utf-8-sig")            # a byte-order mark (as spreadsheets write) is not a column
     except UnicodeDecodeError as exc:
         raise BoatlandInputError(f"{path}: not a text CSV file (byte {exc.start} is not UTF-8)") from None
     lines = [(i + 1, ln) for i, ln in enumerate(text.splitlines()) if ln.strip() and not ln.lstrip().startswith("#")]
@@ -315,13 +324,13 @@ def _read_csv(path: Path) -> Weather:
         bad = np.flatnonzero(~np.isfinite(current[0]) | ~np.isfinite(current[1]))
         if bad.size:
             raise BoatlandInputError(f"{path}: line {lines[bad[0] + 1][0]}: the current's speed or direction is empty")
+    at_line = [ln for ln, _ in lines[1:]]
     if kind == "occurrence":
         return Weather.scatter(data["Hs"], data["Tp"], data["direction_from_deg"], data["occurrence"],
-                               source=str(path), parts=parts, current=current)
+                               source=str(path), parts=parts, current=current, lines=at_line)
     t = np.array(times, dtype="datetime64[s]")
-    _regular_step(str(path), t, [ln for ln, _ in lines[1:]])
     return Weather.series(t, data["Hs"], data["Tp"], data["direction_from_deg"], source=str(path), parts=parts,
-                          current=current, carried=carried)
+                          current=current, carried=carried, lines=at_line)
 
 
 _ISO = re.compile(r"^\d{4}-\d{2}-\d{2}([T ]\d{2}(:\d{2}(:\d{2}(\.\d+)?)?)?)?Z?$")
@@ -364,8 +373,12 @@ def _read_netcdf(path: Path) -> Weather:
         if not m or m.group(1).lower() not in _UNITS:
             raise BoatlandInputError(f"{path}: variable 'time': units {units!r} are not CF time units like "
                                      "'hours since 2021-01-01 00:00:00'")
+        calendar = str(_attr(tv, "calendar") or "standard").lower()
+        if calendar not in ("standard", "gregorian", "proleptic_gregorian"):
+            raise BoatlandInputError(f"{path}: variable 'time': calendar {calendar!r} is not read (give times in the "
+                                     "standard, Gregorian calendar)")
         origin = np.datetime64(m.group(2) + "T" + (m.group(3) or "00:00"), "s")
-        tvals = np.asarray(tv[()], dtype=float).ravel()
+        tvals = _decoded(tv)
         if not np.all(np.isfinite(tvals)):
             raise BoatlandInputError(f"{path}: variable 'time' has missing values")
         t = origin + np.round(tvals * _UNITS[m.group(1).lower()]).astype(np.int64).astype("timedelta64[s]")

@@ -85,6 +85,25 @@ def test_the_current_turns_with_the_site(ctv27):
     assert 0.1 < lower < 0.9, lower
 
 
+def test_a_current_just_below_north_interpolates_to_the_0_degree_node(ctv27):
+    """A relative current direction a hair below 360° belongs to the 345°–0° interval, nearly all at 0°."""
+    sc, db = ctv27
+    w = Weather.scatter([0.3, 0.3], [7.0, 7.0], [180.0, 180.0], [0.5, 0.5],
+                        current=([0.5, 0.5], [1e-9, 0.0]))             # at the landing at 0°: towards 359.999…°, 0°
+    lim = sea_limits(db, LandingSetup.from_scenario(sc, db), w, [0.0], current_setup=current_setups(sc, db))
+    assert lim.Hs_limit[0, 0] == pytest.approx(lim.Hs_limit[1, 0], rel=1e-6)
+
+
+def test_a_scenario_that_cannot_take_a_current_says_so(ctv27):
+    """A configuration error (here: no hull mesh to measure the current's areas on) is that error, not a
+    'no static equilibrium' limit of 0."""
+    sc, db = ctv27
+    bare = db.replace(mesh=None)
+    w = Weather.scatter([0.3], [7.0], [180.0], [1.0], current=([0.6], [90.0]))
+    with pytest.raises((BoatlandInputError, ValueError), match="mesh"):
+        sea_limits(bare, LandingSetup.from_scenario(sc, db), w, [0.0], current_setup=current_setups(sc, bare))
+
+
 def test_the_current_from_csv(tmp_path):
     p = tmp_path / "c.csv"
     p.write_text("time,Hs,Tp,direction_from_deg,current_speed,current_direction_from_deg\n"
@@ -95,7 +114,7 @@ def test_the_current_from_csv(tmp_path):
     with pytest.raises(BoatlandInputError, match="the current needs both current_speed and current_direction_from_deg"):
         read_weather(p)
     p.write_text("Hs,Tp,direction_from_deg,occurrence,current_speed,current_direction_from_deg\n0.5,6,270,1,-1,0\n")
-    with pytest.raises(BoatlandInputError, match="row 1: current_speed = -1"):
+    with pytest.raises(BoatlandInputError, match="line 2: current_speed = -1"):
         read_weather(p)
     p.write_text("Hs,Tp,direction_from_deg,occurrence,current_speed,current_direction_from_deg\n0.5,6,270,1,,0\n")
     with pytest.raises(BoatlandInputError, match="line 2: the current's speed or direction is empty"):

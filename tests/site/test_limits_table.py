@@ -64,6 +64,29 @@ def test_the_table_is_the_stores(store):
     assert np.isfinite(t.Hs).all()
 
 
+def test_a_store_sweeping_more_than_tp_and_direction_is_refused(store, tmp_path):
+    """A campaign that also sweeps the push gives several limits per (Tp, direction): not one table."""
+    import shutil
+
+    import h5py
+
+    from boatland.errors import BoatlandInputError
+
+    other = tmp_path / "two_pushes.h5"
+    shutil.copyfile(store, other)
+    with h5py.File(other, "r+") as f:                  # an in-place edit (drops boatland's checksum trailer)
+        lim = f["isee_limits"][()]
+        names = list(lim.dtype.names) + ["axis: thrust.force"]
+        new = np.zeros(2 * lim.size, dtype=[(n, lim.dtype[n]) if n in lim.dtype.names else (n, "f8") for n in names])
+        for n in lim.dtype.names:
+            new[n] = np.concatenate([lim[n], lim[n]])
+        new["axis: thrust.force"] = [60e3] * lim.size + [100e3] * lim.size
+        del f["isee_limits"]
+        f["isee_limits"] = new
+    with pytest.raises(BoatlandInputError, match="sweeps thrust.force besides Tp and direction"):
+        LimitsTable.read(other)
+
+
 def test_between_the_cases_linear_and_outside_not_covered(store):
     t = LimitsTable.read(store)
     h = t.Hs

@@ -70,6 +70,19 @@ def test_two_spectra_against_an_independent_assembly(landing27):
     assert lim.Hs_limit[1, 0] == pytest.approx(alone.Hs[0, 0], rel=1e-9)
 
 
+def test_parts_that_do_not_add_up_are_judged_as_the_total(landing27):
+    """A row whose partitions fall short of its Hs (a part missing in the data) is not judged by the part it has
+    — that would drop part of the sea, on the unsafe side — but as one spectrum of its total."""
+    db, s = landing27
+    parts = {"swell": (np.array([0.5, 0.5]), np.array([10.0, 10.0]), np.array([300.0, 300.0]))}
+    w = Weather.scatter([0.9, 0.52], [7.0, 10.0], [300.0, 300.0], [0.5, 0.5], parts=parts)
+    lim = sea_limits(db, s, w, [180.0])
+    assert lim.two_spectra.tolist() == [False, True]           # 0.5 of 0.9 m: no; 0.5 of 0.52 m: within 10 %
+    total = screening_grid(db, s, [7.0], [(180.0 - 300.0) % 360]).Hs[0, 0]
+    assert lim.Hs_limit[0, 0] == pytest.approx(total, rel=1e-9)
+    assert lim.margin[0, 0] == pytest.approx(total / 0.9, rel=1e-9)
+
+
 def test_the_example_as_two_spectra_and_as_one(landing27):
     """Grøtting 2015 §4.1.5 found 31 % more all-year availability with wind sea and swell apart. On the shipped
     example at three landings the two judgements differ; both are reported (measured: README)."""

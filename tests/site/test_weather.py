@@ -83,6 +83,19 @@ def test_packed_netcdf_as_era5_writes_it(tmp_path):
         read_weather(tmp_path / "gap.nc")
 
 
+def test_netcdf_in_another_calendar_is_refused(tmp_path):
+    import h5py
+
+    path = tmp_path / "model.nc"
+    with h5py.File(path, "w") as f:
+        f["time"] = np.arange(4.0)
+        f["time"].attrs.update({"units": "days since 2021-01-01", "calendar": "360_day"})
+        for k, v in (("Hs", 1.0), ("Tp", 7.0), ("direction_from_deg", 180.0)):
+            f[k] = np.full(4, v)
+    with pytest.raises(BoatlandInputError, match="calendar '360_day' is not read"):
+        read_weather(path)
+
+
 def test_netcdf_without_a_wave_height_names_it(tmp_path):
     xr = pytest.importorskip("xarray")
     t = np.arange(np.datetime64("2021-01-01"), np.datetime64("2021-01-02"), np.timedelta64(1, "h"))
@@ -130,7 +143,11 @@ def test_sum_far_from_one_is_normalised_with_a_warning(tmp_path):
     ("Hs,Tp,direction_from_deg,occurrence,swell_Hs\n1,7,180,1,0.5\n", "partition swell: need all of"),
     ("Hs,Tp,direction_from_deg,occurrence,Hs\n1,7,180,1,1\n", "column 'Hs' appears twice"),
     ("Hs,Tp,direction_from_deg,occurrence,swell_Hs,swell_Tp,swell_direction_from_deg\n1,7,180,1,0.5,0,20\n",
-     "row 1: swell_Tp = 0 is not valid"),
+     "line 2: swell_Tp = 0 is not valid"),
+    ("# c\ntime,Hs,Tp,direction_from_deg,current_speed,current_direction_from_deg\n2021-01-01T00:00,1,7,180,0.5,0\n"
+     "2021-01-01T01:00,1,7,180,-0.5,0\n", "line 4: current_speed = -0.5"),
+    ("time,Hs,Tp,direction_from_deg\n2021-01-01T00:00,1,7,180\n2021-01-01T02:00,1,7,180\n2021-01-01T03:00,1,7,180\n"
+     "2021-01-01T04:00,1,7,180\n", r"line 3: time 2021-01-01T02:00:00 is 2 h after the previous one, not 1 h"),
 ])
 def test_bad_weather_files(tmp_path, text, match):
     with pytest.raises(BoatlandInputError, match=match):
@@ -140,6 +157,12 @@ def test_bad_weather_files(tmp_path, text, match):
 def test_missing_file(tmp_path):
     with pytest.raises(BoatlandInputError, match="no such file \\(the weather file\\)"):
         read_weather(tmp_path / "nope.csv")
+
+
+def test_a_byte_order_mark_is_not_a_column(tmp_path):
+    p = tmp_path / "bom.csv"
+    p.write_bytes("\ufeffHs,Tp,direction_from_deg,occurrence\n1,7,180,1\n".encode("utf-8"))
+    assert read_weather(p).Hs.tolist() == [1.0]
 
 
 def test_an_absent_part_is_empty_fields(tmp_path):
