@@ -79,7 +79,7 @@ def test_the_current_turns_with_the_site(ctv27):
     np.testing.assert_array_equal(a.workable, b.workable)
     np.testing.assert_allclose(a.limits.Hs_limit, b.limits.Hs_limit, rtol=1e-12)
     # the current matters both ways: it takes friction (a current across the vessel) or damps the motions and
-    # adds to the push (measured here: lower in 34 % of the sea states, higher in the rest)
+    # adds to the push (measured here: lower in 33 % of the 240, higher in the rest)
     still = operability(db, s, dataclasses.replace(w, current=None), [30.0, 210.0])
     lower = (a.limits.Hs_limit < still.limits.Hs_limit).mean()
     assert 0.1 < lower < 0.9, lower
