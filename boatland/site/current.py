@@ -8,8 +8,14 @@ friction before the waves do) and damps the motions (:mod:`boatland.loads.curren
 direction it comes from; relative to the vessel like the waves), the screening runs at nodes of current speed
 and relative direction (:data:`CURRENT_SPEED_STEP`, :data:`CURRENT_DIRECTION_STEP`; the speed 0 node without any
 current) for the sea states around each node, and a sea state's limit is interpolated between its four nodes —
-linear in U² (the drag is quadratic) and in direction. The scenario's own ``[current]`` is replaced by the
-weather's.
+linear in U² (the drag is quadratic) and in direction:
+
+.. math:: H_{lim}(U, \theta) = \sum_{a,b \in \{0,1\}} w_a(U)\, v_b(\theta)\, H_{lim}(u_{k+a}, \vartheta_{j+b}),
+          \quad w_1 = \frac{U^2 - u_k^2}{u_{k+1}^2 - u_k^2},\; v_1 = \frac{\theta - \vartheta_j}{\Delta\vartheta},
+
+:math:`w_0 = 1 - w_1`, :math:`v_0 = 1 - v_1`. The scenario's own ``[current]`` is replaced by the weather's. A node
+where the landing has no static equilibrium under the push and the current
+(:class:`~boatland.landing.law.NoStaticEquilibrium`) has limit 0 there (not workable), said in the limits' source.
 """
 
 from __future__ import annotations
