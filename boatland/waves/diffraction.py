@@ -168,6 +168,33 @@ def depth_factor(k, z, h: float):
     return np.where(below, np.nan, Z), np.where(below, np.nan, Zs)
 
 
+@numba.njit(cache=True, inline="always")
+def _hankel_orders(H, h0, h1, x, M):
+    """H[m] = H_m^{(2)}(x), m = 0 … M + 1, by the upward recurrence H_{m+1} = (2m/x) H_m − H_{m−1} from H_0, H_1."""
+    H[0] = h0
+    H[1] = h1
+    for m in range(1, M + 1):
+        H[m + 1] = (2.0 * m / x) * H[m] - H[m - 1]
+
+
+def _series(r, phi_p, k, be, a: float, tol: float):
+    """What both scattered-wave kernels take (module docstring): per frequency the truncation order M and the
+    coefficients A_m, kr, H_0^{(2)}(kr), H_1^{(2)}(kr), and cos/sin mφ of the points and mβ of the directions."""
+    M = n_terms(k * a, tol)
+    Mmax = int(M.max()) if M.size else 0
+    A = np.zeros((k.size, Mmax + 1), dtype=complex)
+    for f in range(k.size):
+        if k[f] > 0:
+            A[f, : M[f] + 1] = scattering_coefficients(k[f] * a, int(M[f]))
+    kr = np.ascontiguousarray(r[:, None] * k[None, :])
+    with np.errstate(all="ignore"):
+        H0 = special.j0(kr) - 1j * special.y0(kr)
+        H1 = special.j1(kr) - 1j * special.y1(kr)
+    mm = np.arange(Mmax + 1)
+    return (kr, H0, H1, A, M.astype(np.int64), np.cos(np.outer(phi_p, mm)), np.sin(np.outer(phi_p, mm)),
+            np.cos(np.outer(be, mm)), np.sin(np.outer(be, mm)))
+
+
 @numba.njit(cache=True)
 def _scattered_sums(x, H0, H1, A, M, cphi, sphi, cth, sth, grad, paired, eta, e_r, e_t):
     """Accumulate η_s, ∂η_s/∂(kr) and (1/kr) ∂η_s/∂ϑ at (P, Nf, Nd), or (P, Nf, 1) with direction f
@@ -181,10 +208,7 @@ def _scattered_sums(x, H0, H1, A, M, cphi, sphi, cth, sth, grad, paired, eta, e_
             Mf = M[f]
             if not xf > 0.0:
                 continue
-            H[0] = H0[p, f]
-            H[1] = H1[p, f]
-            for m in range(1, Mf + 1):
-                H[m + 1] = (2.0 * m / xf) * H[m] - H[m - 1]
+            _hankel_orders(H, H0[p, f], H1[p, f], xf, Mf)
             for m in range(Mf + 1):
                 t = A[f, m] * H[m]
                 cp = cphi[p, m]
@@ -221,10 +245,7 @@ def _scattered_load(x, H0, H1, A, M, cphi, sphi, cth, sth, W, out):
             Mf = M[f]
             if not xf > 0.0:
                 continue
-            H[0] = H0[p, f]
-            H[1] = H1[p, f]
-            for m in range(1, Mf + 1):
-                H[m + 1] = (2.0 * m / xf) * H[m] - H[m - 1]
+            _hankel_orders(H, H0[p, f], H1[p, f], xf, Mf)
             eta[:] = 0j
             for m in range(Mf + 1):
                 t = A[f, m] * H[m]
@@ -268,22 +289,8 @@ def scattered_load(x, y, omega, beta, a: float, weights, h: float = math.inf, *,
     be = np.atleast_1d(np.asarray(beta, dtype=float)).reshape(-1)
     W = np.ascontiguousarray(weights, dtype=float)
     k = wavenumber(om, h, g)
-    M = n_terms(k * a, tol)
-    Mmax = int(M.max()) if M.size else 0
-    A = np.zeros((om.size, Mmax + 1), dtype=complex)
-    for f in range(om.size):
-        if k[f] > 0:
-            A[f, : M[f] + 1] = scattering_coefficients(k[f] * a, int(M[f]))
-    r = np.hypot(x, y)
-    phi_p = np.arctan2(y, x)
-    kr = r[:, None] * k[None, :]
-    with np.errstate(all="ignore"):
-        H0 = special.j0(kr) - 1j * special.y0(kr)
-        H1 = special.j1(kr) - 1j * special.y1(kr)
-    mm = np.arange(Mmax + 1)
     out = np.zeros((W.shape[2], be.size, om.size), dtype=complex)
-    _scattered_load(np.ascontiguousarray(kr), H0, H1, A, M.astype(np.int64), np.cos(np.outer(phi_p, mm)),
-                    np.sin(np.outer(phi_p, mm)), np.cos(np.outer(be, mm)), np.sin(np.outer(be, mm)), W, out)
+    _scattered_load(*_series(np.hypot(x, y), np.arctan2(y, x), k, be, a, tol), W, out)
     return out
 
 
@@ -354,23 +361,10 @@ def cylinder_field(x, y, z, omega, beta, a: float, h: float = math.inf, *, g: fl
             gx += -1j * k[None, :, None] * cb * eta
             gy += -1j * k[None, :, None] * sb * eta
     if part != "incident":
-        M = n_terms(k * a, tol)
-        Mmax = int(M.max()) if M.size else 0
-        A = np.zeros((Nf, Mmax + 1), dtype=complex)
-        for f in range(Nf):
-            if k[f] > 0:
-                A[f, : M[f] + 1] = scattering_coefficients(k[f] * a, int(M[f]))
-        kr = r[:, None] * k[None, :]
-        with np.errstate(all="ignore"):
-            H0 = special.j0(kr) - 1j * special.y0(kr)
-            H1 = special.j1(kr) - 1j * special.y1(kr)
-        mm = np.arange(Mmax + 1)
         es = np.zeros((P, Nf, Nd), dtype=complex)
         e_r = np.zeros_like(es) if velocity else np.zeros((1, 1, 1), dtype=complex)
         e_t = np.zeros_like(es) if velocity else np.zeros((1, 1, 1), dtype=complex)
-        _scattered_sums(np.ascontiguousarray(kr), H0, H1, A, M.astype(np.int64),
-                        np.cos(np.outer(phi_p, mm)), np.sin(np.outer(phi_p, mm)),
-                        np.cos(np.outer(be, mm)), np.sin(np.outer(be, mm)), velocity, paired, es, e_r, e_t)
+        _scattered_sums(*_series(r, phi_p, k, be, a, tol), velocity, paired, es, e_r, e_t)
         eta += es
         if velocity:
             c, s = np.cos(phi_p)[:, None, None], np.sin(phi_p)[:, None, None]
