@@ -64,9 +64,12 @@ def end_to_end(code: Path, weather: Path, *extra: str) -> float:
 def in_process(weather: Path) -> list[tuple[str, float]]:
     import warnings
 
+    import numpy as np
+
     from boatland.checks.files import load_checked
     from boatland.freqdomain import LandingSetup, slip_transfer
-    from boatland.site import operability, read_weather, relative_direction, sea_limits
+    from boatland.site import operability, read_weather, sea_limits
+    from boatland.site.limits import relative_directions
 
     rows = []
     t = time.perf_counter()
@@ -77,8 +80,9 @@ def in_process(weather: Path) -> list[tuple[str, float]]:
             warnings.simplefilter("ignore")
             sc, db, _ = load_checked(REPO / "scenarios" / f"{name}.toml")
         s = LandingSetup.from_scenario(sc, db)
-        betas = sorted({round(float(b)) % 360 for d in [w.from_deg] + [p[2] for p in w.parts.values()]
-                        for b in relative_direction(d[:, None], [float(x) for x in LANDINGS]).ravel()})
+        landings = [float(x) for x in LANDINGS]
+        betas = np.unique(np.concatenate([relative_directions(d, landings).ravel()
+                                          for d in [w.from_deg] + [p[2] for p in w.parts.values()]]))
         slip_transfer(db, s, beta_deg=betas)                         # warm (numba) — then each step timed on a
         t = time.perf_counter()                                      # fresh copy (no pile table made for it yet)
         slip_transfer(db.replace(), s, beta_deg=betas)

@@ -27,7 +27,7 @@ import numpy as np
 from boatland.freqdomain.landing import LandingSetup
 from boatland.landing.law import NoStaticEquilibrium
 from boatland.site.compass import relative_direction
-from boatland.site.limits import SeaLimits, relative_directions, two_spectra_rows, wave_limits
+from boatland.site.limits import SeaLimits, relative_directions, sea_heights, two_spectra_rows, wave_limits
 from boatland.site.weather import Weather
 from boatland.vessel.database import HydroDB
 
@@ -141,12 +141,10 @@ def _in_current(db: HydroDB, weather: Weather, L: np.ndarray, current_setup, pro
         if progress is not None:
             progress(done, len(nodes))
     two = two_spectra_rows(weather, kw.get("spectra", "auto"))
-    hs = weather.Hs.copy()
-    if two.any():
-        hs[two] = np.sqrt(sum(np.where(two, Hp, 0.0) ** 2 for Hp, _, _ in weather.parts.values()))[two]
+    hs = sea_heights(weather, two)
     with np.errstate(divide="ignore", invalid="ignore"):
         margin = H / hs[:, None]
-    beta_total = relative_directions(relative_direction(weather.from_deg[:, None], L[None, :]))
+    beta_total = relative_directions(weather.from_deg, L)
     if base is None:                                   # no node could be screened: the scenario still says who
         base = wave_limits(db, current_setup(0.0, 0.0), weather.take([0]), L, **kw)
     note = (f"; no static equilibrium on the landing in {len(failed)} of these currents, e.g. {failed[0]}: limit 0 "

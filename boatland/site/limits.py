@@ -34,7 +34,6 @@ A time-domain table in place of the screening is :mod:`boatland.site.tables`; ea
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -48,7 +47,7 @@ from boatland.site.compass import relative_direction
 from boatland.site.weather import Weather
 from boatland.vessel.database import HydroDB
 
-__all__ = ["DIRECTION_STEP", "PARTS_TOLERANCE", "PART_SHAPES", "SeaLimits", "margin_text", "relative_directions",
+__all__ = ["DIRECTION_STEP", "PARTS_TOLERANCE", "PART_SHAPES", "SeaLimits", "relative_directions", "sea_heights",
            "two_spectra_rows", "wave_limits"]
 
 #: Relative directions are rounded to this [deg]: hindcasts (NORA10, ERA5) give directions to 1° or coarser.
@@ -122,9 +121,19 @@ def two_spectra_rows(weather: Weather, spectra: str = "auto") -> np.ndarray:
     return (sum2 > 0) & (np.abs(np.sqrt(sum2) - weather.Hs) <= PARTS_TOLERANCE * weather.Hs)
 
 
-def relative_directions(beta):
-    """Relative directions [deg] rounded to :data:`DIRECTION_STEP`, in [0, 360)."""
-    return np.mod(np.round(np.asarray(beta, dtype=float) / DIRECTION_STEP) * DIRECTION_STEP, 360.0)
+def relative_directions(from_deg, landings_deg) -> np.ndarray:
+    """(n, L): the relative direction (:func:`~boatland.site.compass.relative_direction`) of waves from each of
+    ``from_deg`` (n,) at each landing of ``landings_deg`` (L,), rounded to :data:`DIRECTION_STEP`, in [0, 360)."""
+    beta = relative_direction(np.asarray(from_deg, dtype=float)[:, None],
+                              np.asarray(landings_deg, dtype=float)[None, :])
+    return np.mod(np.round(beta / DIRECTION_STEP) * DIRECTION_STEP, 360.0)
+
+
+def sea_heights(weather: Weather, two: np.ndarray) -> np.ndarray:
+    """(n,) the Hs each sea state is judged by: √ΣHs_p² of its parts where it is judged as two spectra (``two``),
+    else its total Hs."""
+    sum2 = sum(np.where(H > 0, H, 0.0) ** 2 for H, _, _ in weather.parts.values()) if weather.parts else 0.0
+    return np.where(two, np.sqrt(sum2), weather.Hs)
 
 
 def wave_limits(db: HydroDB, setup: LandingSetup, weather: Weather, landings_deg, *,
@@ -167,11 +176,10 @@ def wave_limits(db: HydroDB, setup: LandingSetup, weather: Weather, landings_deg
     comps = []                                      # (row index, Tp, β (n_sel, L), Hs², shape name)
     one = ~two
     if one.any():
-        comps.append((np.flatnonzero(one), weather.Tp[one], relative_directions(
-            relative_direction(weather.from_deg[one][:, None], L[None, :])), np.ones(int(one.sum())), "sea"))
+        comps.append((np.flatnonzero(one), weather.Tp[one], relative_directions(weather.from_deg[one], L), np.ones(int(one.sum())), "sea"))
     for name, (H, T, d) in parts.items():
         rows = np.flatnonzero(two & (H > 0))
-        comps.append((rows, T[rows], relative_directions(relative_direction(d[rows][:, None], L[None, :])),
+        comps.append((rows, T[rows], relative_directions(d[rows], L),
                       H[rows] ** 2, name))
     betas = np.unique(np.concatenate([c[2].ravel() for c in comps]))
     tr = slip_transfer(db, setup, omega=omega, beta_deg=betas, method=method, mu=mu, thrust=thrust)
@@ -204,15 +212,10 @@ def wave_limits(db: HydroDB, setup: LandingSetup, weather: Weather, landings_deg
                         statistics=statistics, access_duration=access_duration, method=method, names=tr.names,
                         keep=keep.reshape(n * L.size, 1, R), background=tr.background)
     lim = table.Hs.reshape(n, L.size)
-    hs = np.where(two, np.sqrt(hs2), weather.Hs)
+    hs = sea_heights(weather, two)
     with np.errstate(divide="ignore", invalid="ignore"):
         margin = lim / hs[:, None]
-    beta_total = relative_directions(relative_direction(weather.from_deg[:, None], L[None, :]))
+    beta_total = relative_directions(weather.from_deg, L)
     return SeaLimits(Hs_limit=lim, margin=margin, beta_deg=beta_total, governing=table.governing.reshape(n, L.size),
                      two_spectra=two, landings_deg=L, accept=p_acc, access_duration=float(access_duration),
                      statistics=statistics, method=method, mu=float(tr.setup.mu), thrust=float(tr.setup.thrust))
-
-
-def margin_text(margin: float) -> str:
-    """A margin as planners read it: ``"1.35×"``, ``"∞"``."""
-    return "∞" if math.isinf(margin) else f"{margin:.2f}×"

@@ -17,7 +17,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from boatland.site.compass import relative_direction
 from boatland.site.limits import SeaLimits, relative_directions
 from boatland.site.weather import Weather
 
@@ -190,7 +189,7 @@ def table_limits(table: LimitsTable, weather: Weather, landings_deg) -> SeaLimit
     """The limit of each of ``weather``'s sea states at each landing from a time-domain table (module docstring):
     the total sea's Hs, Tp and direction; not covered → NaN limit, not workable."""
     L = np.atleast_1d(np.asarray(landings_deg, dtype=float)) % 360.0
-    beta = relative_directions(relative_direction(weather.from_deg[:, None], L[None, :]))
+    beta = relative_directions(weather.from_deg, L)
     lim = table.at(weather.Tp[:, None], beta)
     with np.errstate(invalid="ignore", divide="ignore"):
         margin = lim / weather.Hs[:, None]

@@ -11,6 +11,7 @@ from pathlib import Path
 import h5py
 import numpy as np
 import pytest
+from small_campaign import isee_file
 
 pytestmark = pytest.mark.slow        # rare-event campaigns in real processes: not in the quick loop (pytest -m "not slow")
 
@@ -30,30 +31,6 @@ def same(a, b):
         x, y = a[name], b[name]
         assert x.dtype == y.dtype and x.shape == y.shape, name
         assert x.tobytes() == y.tobytes(), name      # bit for bit (NaN included)
-
-
-def isee_file(tmp_path, name="isee", extra="", axes='"sea.relative_direction_deg" = [180.0, 90.0]'):
-    path = tmp_path / f"{name}.toml"
-    path.write_text(f"""
-name = "{name}"
-scenario = "{BASE}"
-method = "isee"
-master_seed = 17
-access = 20.0
-[axes]
-{axes}
-[isee]
-target_cov = 0.3
-batch = 6
-min_samples = 12
-max_samples = 30
-settle = 10.0
-accept = 0.05
-levels = 3
-limit_width = 0.02
-{extra}
-""")
-    return path
 
 
 def summaries(store):

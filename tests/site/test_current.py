@@ -121,5 +121,8 @@ def test_the_current_from_csv(tmp_path):
         read_weather(p)
 
 
-def test_the_steps_are_what_the_docs_say():
-    assert (CURRENT_SPEED_STEP, CURRENT_DIRECTION_STEP) == (0.25, 15.0)
+def test_the_readme_says_the_steps_the_code_takes():
+    from tests.site.conftest import ROOT
+
+    readme = " ".join((ROOT / "README.md").read_text(encoding="utf-8").split())
+    assert f"nodes every {CURRENT_SPEED_STEP:g} m/s and {CURRENT_DIRECTION_STEP:g}° of relative direction" in readme

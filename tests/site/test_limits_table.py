@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 from boatland.site import LimitsTable, Weather, table_operability
+from small_campaign import isee_file
 from tests.site.conftest import CTV24_LANDING, HINDCAST
 
 pytestmark = pytest.mark.slow        # a real campaign in a real process
@@ -24,27 +25,8 @@ def run(*args):
 @pytest.fixture(scope="module")
 def store(tmp_path_factory):
     tmp = tmp_path_factory.mktemp("limits")
-    camp = tmp / "site_limits.toml"
-    camp.write_text(f"""
-name = "site_limits"
-scenario = "{CTV24_LANDING}"
-method = "isee"
-master_seed = 30
-access = 20.0
-[axes]
-"sea.Tp" = [6.0, 9.0]
-"sea.relative_direction_deg" = [180.0, 135.0, 90.0]
-[isee]
-incident = "first slip"
-target_cov = 0.3
-batch = 6
-min_samples = 12
-max_samples = 30
-settle = 10.0
-accept = 0.05
-levels = 3
-limit_width = 0.02
-""")
+    camp = isee_file(tmp, "site_limits", axes='"sea.Tp" = [6.0, 9.0]\n"sea.relative_direction_deg" = [180.0, 135.0, 90.0]',
+                     seed=30)
     r = run("campaign", camp, "-o", tmp / "limits.h5")
     assert r.returncode == 0, r.stderr
     return tmp / "limits.h5"
