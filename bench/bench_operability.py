@@ -6,8 +6,9 @@ Run: ``python bench/bench_operability.py [--repeat 3]``. Prints Markdown.
 1. **End to end**: ``boatland operability ctv_landing ctv24_landing HOURLY.csv --landing 45 --landing 165
    --landing 285 --window 4`` in a subprocess (interpreter start, imports, both scenarios' checks and
    databases, the weather read, both limits tables, windows, the tables printed) — wall time, best and median
-   of ``--repeat``; the same with ``--one-spectrum``; and with the model's M2 tidal current (1.2 m/s, flood from
-   45°, ebb from 225°) — each sea state judged in its own current.
+   of ``--repeat``; the same with ``--one-spectrum``; with the model's M2 tidal current (1.2 m/s, flood from
+   45°, ebb from 225°) — each sea state judged in its own current; with the model's own wind (the one its wind
+   sea grows from), and with both.
 2. **In this process** (warm): reading the CSV, the screening's transfer functions for every direction the
    landings need (one per vessel), the limits of every sea state at every landing, the windows.
 
@@ -40,12 +41,12 @@ from _timing import cpu_name  # noqa: E402
 LANDINGS = ("45", "165", "285")
 
 
-def hourly_year(folder: Path, tide: bool = False) -> Path:
+def hourly_year(folder: Path, tide: bool = False, wind: bool = False) -> Path:
     spec = importlib.util.spec_from_file_location("make_example_hindcast", REPO / "docs" / "make_example_hindcast.py")
     mod = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(mod)
-    path = folder / f"hourly_2021{'_tide' if tide else ''}.csv"
-    path.write_text(mod.make(1, tide=tide), encoding="utf-8")
+    path = folder / f"hourly_2021{'_tide' if tide else ''}{'_wind' if wind else ''}.csv"
+    path.write_text(mod.make(1, tide=tide, wind=wind), encoding="utf-8")
     return path
 
 
@@ -165,6 +166,11 @@ def main() -> None:
         walls = [end_to_end(REPO, tidal) for _ in range(max(1, args.repeat // 2))]
         print(f"| two, each sea state in its M2 tidal current (1.2 m/s) | {min(walls):.2f} | "
               f"{statistics.median(walls):.2f} | {len(walls)} |")
+        for tide, what in ((False, "its own wind"), (True, "its own wind and M2 tidal current")):
+            windy = hourly_year(Path(tmp), tide=tide, wind=True)
+            walls = [end_to_end(REPO, windy) for _ in range(max(1, args.repeat // 2))]
+            print(f"| two, each sea state in {what} | {min(walls):.2f} | {statistics.median(walls):.2f} | "
+                  f"{len(walls)} |")
         print()
         print("| step (this process, warm) | s |")
         print("|---|---|")

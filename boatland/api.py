@@ -148,7 +148,7 @@ def operability(scenario, weather, *, landings=None, window: float | None = 4.0,
     from boatland.checks.files import check_loaded
     from boatland.errors import BoatlandInputError
     from boatland.freqdomain import LandingSetup
-    from boatland.site import LimitsTable, Weather, current_setups, landing_bearing, read_weather, table_operability
+    from boatland.site import LimitsTable, Weather, flow_setups, landing_bearing, read_weather, table_operability
     from boatland.site import operability as judge
 
     w = weather if isinstance(weather, Weather) else read_weather(weather)
@@ -163,7 +163,7 @@ def operability(scenario, weather, *, landings=None, window: float | None = 4.0,
         db, _ = check_loaded(sc)
     parts = getattr(getattr(sc.sea, "waves", None), "parts", None)
     L = [float(landing_bearing(sc.vessel.heading_deg))] if landings is None else landings
-    extra = {} if w.current is None else {"current_setup": current_setups(sc, db)}
+    extra = {} if w.current is None and w.wind is None else {"flow_setup": flow_setups(sc, db)}
     return judge(db, LandingSetup.from_scenario(sc, db), w, L, name=sc.name, window_hours=window, accept=accept,
                  sea=parts[0] if parts else None, water_depth=sc.sea.water_depth if sc.sea is not None else None,
                  **extra)

@@ -13,7 +13,9 @@ The model (seeded, numpy's PCG64; ``python docs/make_example_hindcast.py`` rewri
   0.55 m (January), AR(1) over 36 h; Tp 8–12 s;
 - the total sea: Hs = √(Hs_w² + Hs_s²); Tp and direction those of the part with more energy (peak values);
 - with ``tide=True`` (the benchmark's variant; the shipped file has none): an M2 tidal current, 1.2 m/s at its
-  peaks (12.42 h period), the flood coming from 45°, the ebb from 225°.
+  peaks (12.42 h period), the flood coming from 45°, the ebb from 225°;
+- with ``wind=True`` (the benchmark's variant; the shipped file has none): the model's wind itself, its speed at
+  10 m (to 0.1 m/s) and the direction it comes from.
 
 Rounded as hindcasts give them: Hs to 1 cm, Tp to 0.1 s, directions to 1°.
 """
@@ -41,9 +43,9 @@ def ar1(rng, n: int, tau_h: float, sigma: float, step_h: float = STEP_H) -> np.n
     return x
 
 
-def make(step_h: int = STEP_H, tide: bool = False) -> str:
+def make(step_h: int = STEP_H, tide: bool = False, wind: bool = False) -> str:
     """The file's text (``step_h``: the step in hours; the shipped file is 3-hourly, the benchmark makes an
-    hourly year with the same model; ``tide``: add the tidal current's columns)."""
+    hourly year with the same model; ``tide``, ``wind``: add the tidal current's, the wind's columns)."""
     rng = np.random.default_rng(SEED)
     t = np.arange(np.datetime64("2021-01-01T00:00"), np.datetime64("2022-01-01T00:00"),
                   np.timedelta64(step_h, "h"))
@@ -79,9 +81,12 @@ def make(step_h: int = STEP_H, tide: bool = False) -> str:
         phase = np.sin(2 * np.pi * (day * 24.0) / 12.42)
         speed, cur_from = np.round(1.2 * np.abs(phase), 2), np.where(phase >= 0, 45, 225)
         lines[-1] += ",current_speed,current_direction_from_deg"
+    if wind:
+        lines[-1] += ",wind_speed,wind_direction_from_deg"
     for i in range(n):
         lines.append(f"{str(t[i])[:16]},{H[i]:.2f},{T[i]:.1f},{D[i]:.0f},{hw[i]:.2f},{tw[i]:.1f},{wind_from[i]:.0f},"
-                     f"{hs_[i]:.2f},{ts[i]:.1f},{swell_from[i]:.0f}" + (f",{speed[i]:.2f},{cur_from[i]}" if tide else ""))
+                     f"{hs_[i]:.2f},{ts[i]:.1f},{swell_from[i]:.0f}" + (f",{speed[i]:.2f},{cur_from[i]}" if tide else "")
+                     + (f",{U[i]:.1f},{wind_from[i]:.0f}" if wind else ""))
     return "\n".join(lines) + "\n"
 
 

@@ -35,9 +35,10 @@ def add_parser(sub) -> None:
                     "side over the same weather. Directions are compass degrees from true North: the waves come "
                     "FROM direction_from_deg; a landing's bearing is the direction from the tower's axis to it "
                     "(the vessel heads the opposite way). WEATHER: CSV (time or occurrence, Hs, Tp, "
-                    "direction_from_deg; optionally wind-sea and swell partitions, and current_speed and "
-                    "current_direction_from_deg — each sea state is then judged in its own current; see "
-                    "scenarios/example_hindcast.csv) or netCDF-4.")
+                    "direction_from_deg; optionally wind-sea and swell partitions, current_speed and "
+                    "current_direction_from_deg, wind_speed (1-hour mean at 10 m) and wind_direction_from_deg — each "
+                    "sea state is then judged in its own current and wind; see scenarios/example_hindcast.csv) or "
+                    "netCDF-4.")
     set_option(op)
     op.add_argument("scenarios", nargs="+", type=shipped_or_path("scenario"), metavar="SCENARIO",
                     help="scenario file (TOML) or the name of a shipped one, e.g. ctv_landing, judged by the screening "
@@ -74,7 +75,7 @@ def cmd(args) -> int:
     from boatland.freqdomain import LandingSetup
     from boatland.inputs import check_input
     from boatland.outputs import check_outputs
-    from boatland.site import (LimitsTable, current_setups, landing_bearing, operability, read_weather,
+    from boatland.site import (LimitsTable, flow_setups, landing_bearing, operability, read_weather,
                                relative_direction, side_by_side, table_operability)
     from boatland.vessel.directions import direction_problem
 
@@ -129,15 +130,17 @@ def cmd(args) -> int:
         setup = LandingSetup.from_scenario(scenario, db, roll_limit_deg=args.roll_limit)
         waves = scenario.sea.waves if scenario.sea is not None else None
         parts = getattr(waves, "parts", None)
+        flows = " and ".join(w for w in ("current", "wind") if getattr(weather, w) is not None)
         print(f"screening {scenario.name} over {weather.describe()} at {landings.size} landing(s)"
-              + (" in each sea state's current" if weather.current is not None else "") + " …",
-              file=sys.stderr, flush=True)
+              + (f" in each sea state's own {flows}" if flows else "") + " …", file=sys.stderr, flush=True)
         extra = {}
-        if weather.current is not None:
-            extra = {"current_setup": current_setups(scenario, db, roll_limit_deg=args.roll_limit),
+        if flows:
+            extra = {"flow_setup": flow_setups(scenario, db, roll_limit_deg=args.roll_limit),
                      "progress": _progress(scenario.name)}
-            if scenario.current is not None:
-                print(f"note: {scenario.name}'s own [current] is replaced by {args.weather}'s", file=sys.stderr)
+            for what in ("current", "wind"):
+                if getattr(weather, what) is not None and getattr(scenario, what) is not None:
+                    print(f"note: {scenario.name}'s own [{what}] speed and direction are replaced by {args.weather}'s "
+                          "(its drag coefficients kept)", file=sys.stderr)
         results.append(operability(
             db, setup, weather, landings, name=scenario.name, window_hours=window, **extra,
             accept=args.accept, statistics=args.statistics, method=args.method, sea=parts[0] if parts else None,
@@ -168,7 +171,7 @@ def cmd(args) -> int:
 
 
 def _progress(name: str):
-    """``progress(done, total)`` of the current's nodes: a line on stderr about every 10 %."""
+    """``progress(done, total)`` of the flows' nodes: a line on stderr about every 10 %."""
     import time
 
     t0 = time.monotonic()
@@ -177,6 +180,6 @@ def _progress(name: str):
     def tick(done: int, total: int) -> None:
         if done == total or done - said[0] >= max(1, total // 10):
             said[0] = done
-            print(f"  {name}: current node {done}/{total} ({time.monotonic() - t0:.0f} s)", file=sys.stderr,
+            print(f"  {name}: flow node {done}/{total} ({time.monotonic() - t0:.0f} s)", file=sys.stderr,
                   flush=True)
     return tick

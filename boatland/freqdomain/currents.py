@@ -14,7 +14,7 @@ approach puts the current where the vessel tolerates it best. With the waves' re
 scenario's, the best side in a current of speed U is the relative current direction with the highest limiting
 Hs (:meth:`CurrentSweep.advice`). Both turn together with the side in reality (the waves come from one
 direction too): ``boatland operability`` weighs both over a site's weather, each sea state in its own current
-(:mod:`boatland.site.current`).
+(:mod:`boatland.site.flows`).
 """
 
 from __future__ import annotations

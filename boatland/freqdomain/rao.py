@@ -75,7 +75,7 @@ import numpy as np
 
 from boatland.errors import BoatlandInputError
 from boatland.vessel.database import HydroDB
-from boatland.landing.law import ContactLaw, point_map, preload_stiffness, solve_saddle, static_preload, tangents
+from boatland.landing.law import ContactLaw, point_map, preload_stiffness, solve_saddle_stack, static_preload, tangents
 from boatland.sea.states import excitation_table
 from boatland.vessel.directions import direction_problem
 from boatland.waves.excitation import interpolate_excitation
@@ -412,12 +412,11 @@ def hinged_rao(db: HydroDB, omega, points, *, beta_deg=None, normal=None, stiffn
     nb = X.shape[1]
     L = np.zeros((0, 6)) if loads is None else np.atleast_2d(np.asarray(loads, dtype=float))
     nl = L.shape[0]
-    x = np.empty((w.size, nb + nl, 6), dtype=complex)
-    lam = np.empty((w.size, nb + nl, pins.shape[0]), dtype=complex)
-    for iw in range(w.size):
-        rhs = X[iw].T if not nl else np.concatenate([X[iw].T, L.T.astype(complex)], axis=1)
-        xi, li, _ = solve_saddle(Zs[iw], pins, rhs)
-        x[iw], lam[iw] = xi.T, li.T
+    rhs = np.swapaxes(X, 1, 2)                                                   # (Nw, 6, Nβ)
+    if nl:
+        rhs = np.concatenate([rhs, np.broadcast_to(L.T.astype(complex), (w.size, 6, nl))], axis=2)
+    xs, ls = solve_saddle_stack(Zs, pins, rhs)
+    x, lam = np.swapaxes(xs, 1, 2), np.swapaxes(ls, 1, 2)
     J = law.reactions(x, lam, w[:, None])
     extra = {} if loads is None else {"x_loads": x[:, nb:], "J_loads": J[:, nb:]}
     return HingedResponse(omega=w, beta_deg=_beta(db, beta_deg), points=P, normals=N, law=law, x=x[:, :nb],

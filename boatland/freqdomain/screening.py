@@ -74,7 +74,7 @@ from boatland.vessel.database import HydroDB
 from boatland.waves.spectra import spreading_cos2s
 
 __all__ = ["METHODS", "SHEAR_FACTORS", "SeaResponse", "ShearSweep", "SlipTransfer", "default_omega", "gust_moments", "landed_response",
-           "screening_grid", "sea_response", "shear_sweep", "slip_directions", "slip_transfer"]
+           "margin_rows", "screening_grid", "sea_response", "shear_sweep", "slip_directions", "slip_transfer", "slow_swing"]
 
 METHODS = ("improved", "wu")
 
@@ -220,23 +220,36 @@ def slip_transfer(db: HydroDB, setup: LandingSetup, *, omega=None, beta_deg=None
     r = landed_response(db, setup, w, b, method)
     n_p = setup.n_points
     J0 = (-setup.thrust / n_p * np.tile([1.0, 0.0, 0.0], (n_p, 1))) if method == "wu" else r.J_static
-    H, cap, names, rows = [], [], [], []
-    for c in range(n_p):
-        n = setup.normals[c]
-        Dc = slip_directions(n, J0[c], setup.mu) if method != "wu" else slip_directions(n)
-        rows.append(Dc - setup.mu * n)
-        H.append(r.J[:, :, c] @ rows[-1].T)                               # (Nw, Nβ, 4)
-        cap.append(setup.mu * float(n @ J0[c]) - Dc @ J0[c])
-        names += [f"{m} {c}" for m in MODES]
-    H = np.concatenate(H + [r.x[..., 3:4]], axis=-1)
-    cap = np.concatenate(cap + [[math.radians(setup.roll_limit_deg)]])
-    background = None
-    if method != "wu" and setup.steady is not None and setup.steady.gust_pattern is not None:
-        mom, cor = gust_moments(db, setup, J0, correlation=True)
-        background = SlowSwing(mom, setup.steady.linear_share, cor)
+    rows, cap = margin_rows(setup, J0, tilt=method != "wu")
+    H = np.concatenate([r.J[:, :, c] @ rows[c].T for c in range(n_p)] + [r.x[..., 3:4]], axis=-1)
+    names = [f"{m} {c}" for c in range(n_p) for m in MODES]
+    background = slow_swing(db, setup, J0) if method != "wu" else None
     return SlipTransfer(omega=w, beta_deg=b, H=H, capacity=cap, names=tuple(names + ["roll"]), J_static=J0,
                         N_static=np.einsum("pk,pk->p", setup.normals, J0), method=method, setup=setup,
-                        background=background, motions=r.x, directions=np.stack(rows))
+                        background=background, motions=r.x, directions=rows)
+
+
+def margin_rows(setup: LandingSetup, J0: np.ndarray, tilt: bool = True) -> tuple[np.ndarray, np.ndarray]:
+    r"""Each contact's rows :math:`d_{m,c} - \mu n_c` (Np, 4, 3) that make its four margins of its force, and the
+    capacities (4 Np + 1,): :math:`a_{m,c} = \mu\,n_c^\top J^0_c - d_{m,c}^\top J^0_c`, then θ_max [rad] (module
+    docstring); ``tilt``: the directions tilted onto the friction circle by the static load
+    (:func:`slip_directions`), else Grøtting's table (the "wu" hinge)."""
+    rows, cap = [], []
+    for c in range(setup.n_points):
+        n = setup.normals[c]
+        Dc = slip_directions(n, J0[c], setup.mu) if tilt else slip_directions(n)
+        rows.append(Dc - setup.mu * n)
+        cap.append(setup.mu * float(n @ J0[c]) - Dc @ J0[c])
+    return np.stack(rows), np.concatenate(cap + [[math.radians(setup.roll_limit_deg)]])
+
+
+def slow_swing(db: HydroDB, setup: LandingSetup, J0: np.ndarray) -> SlowSwing | None:
+    """The margins' and roll's swing in the wind's gusts (:func:`gust_moments`, with its correlation and the
+    setup's linear share of damping); None without gusts."""
+    if setup.steady is None or setup.steady.gust_pattern is None:
+        return None
+    mom, cor = gust_moments(db, setup, J0, correlation=True)
+    return SlowSwing(mom, setup.steady.linear_share, cor)
 
 
 def gust_moments(db: HydroDB, setup: LandingSetup, J0: np.ndarray, correlation: bool = False):

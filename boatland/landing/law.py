@@ -40,7 +40,7 @@ import numpy as np
 from boatland.vessel.database import HydroDB, skew
 
 __all__ = ["ContactLaw", "LandedModes", "NoStaticEquilibrium", "SteadyLoad", "landed_modes", "normal_follows",
-           "point_map", "preload_stiffness", "solve_saddle", "static_preload", "tangents"]
+           "point_map", "preload_stiffness", "solve_saddle", "solve_saddle_stack", "static_preload", "tangents"]
 
 _EX = np.array([1.0, 0.0, 0.0])
 
@@ -160,6 +160,36 @@ def solve_saddle(Z: np.ndarray, Cmat: np.ndarray, F: np.ndarray) -> tuple[np.nda
     sol = np.linalg.lstsq(K, rhs, rcond=None)[0]
     res = np.linalg.norm(K @ sol - rhs) / max(np.linalg.norm(rhs), 1e-300)
     return sol[:6], s * sol[6:], float(res)
+
+
+def solve_saddle_stack(Z: np.ndarray, Cmat: np.ndarray, F: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    r""":func:`solve_saddle` for a stack of frequencies at once: Z (Nw, 6, 6), F (Nw, 6, Nb) → x (Nw, 6, Nb),
+    λ (Nw, m, Nb).
+
+    The constraints :math:`C x = 0` do not change with frequency, so they are eliminated once (the null-space
+    method, e.g. Nocedal & Wright 2006, *Numerical Optimization*, §16.2): with :math:`N` an orthonormal basis of
+    C's null space, :math:`x = N y`, :math:`(N^H Z N)\,y = N^H F` (one LU solve per frequency, all in one
+    call), and the reactions are the least-norm :math:`\lambda = (C^	op)^+ (Z x - F)` — the same solution as the
+    minimum-norm saddle solve whenever :math:`N^H Z N` is regular (to round-off: 1e-15 relative). A stack
+    where it is singular (an unrestrained direction) is solved frequency by frequency by :func:`solve_saddle`."""
+    m = Cmat.shape[0]
+    try:
+        if m:
+            u, sv, vh = np.linalg.svd(Cmat)
+            rank = int(np.sum(sv > sv[0] * max(Cmat.shape) * np.finfo(float).eps))
+            Nb = vh[rank:].conj().T                                       # (6, 6 − rank)
+            y = np.linalg.solve(Nb.conj().T @ Z @ Nb, Nb.conj().T @ F)
+            x = Nb @ y
+            lam = np.linalg.pinv(Cmat.T) @ (Z @ x - F)
+        else:
+            x = np.linalg.solve(Z, F)
+            lam = np.zeros((Z.shape[0], 0, F.shape[-1]), dtype=complex)
+        if np.all(np.isfinite(x)) and np.all(np.isfinite(lam)):
+            return x, lam
+    except np.linalg.LinAlgError:
+        pass
+    out = [solve_saddle(Z[i], Cmat, F[i]) for i in range(Z.shape[0])]
+    return np.stack([o[0] for o in out]), np.stack([o[1] for o in out]).reshape(Z.shape[0], m, F.shape[-1])
 
 
 @dataclass(frozen=True, eq=False)

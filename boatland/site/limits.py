@@ -29,7 +29,7 @@ peak periods are used as given. The screening's transfer functions are computed 
 every direction any landing needs.
 
 A time-domain table in place of the screening is :mod:`boatland.site.tables`; each sea state in its own current,
-:mod:`boatland.site.current`.
+:mod:`boatland.site.flows`.
 """
 
 from __future__ import annotations
@@ -47,8 +47,8 @@ from boatland.site.compass import relative_direction
 from boatland.site.weather import Weather
 from boatland.vessel.database import HydroDB
 
-__all__ = ["DIRECTION_STEP", "PARTS_TOLERANCE", "PART_SHAPES", "SeaLimits", "relative_directions", "sea_heights",
-           "two_spectra_rows", "wave_limits"]
+__all__ = ["DIRECTION_STEP", "PARTS_TOLERANCE", "PART_SHAPES", "SeaLimits", "needed_directions", "relative_directions",
+           "sea_heights", "sea_moments", "two_spectra_rows", "wave_limits"]
 
 #: Relative directions are rounded to this [deg]: hindcasts (NORA10, ERA5) give directions to 1° or coarser.
 DIRECTION_STEP = 1.0
@@ -136,6 +136,79 @@ def sea_heights(weather: Weather, two: np.ndarray) -> np.ndarray:
     return np.where(two, np.sqrt(sum2), weather.Hs)
 
 
+def _components(weather: Weather, L: np.ndarray, spectra: str):
+    """The (rows, Tp, β (n_sel, L), Hs², shape name) components of each row × landing: one for a one-spectrum row,
+    one per part else; and the two-spectra rows."""
+    parts = {} if spectra == "one" else weather.parts
+    two = two_spectra_rows(weather, spectra)
+    comps = []
+    one = ~two
+    if one.any():
+        comps.append((np.flatnonzero(one), weather.Tp[one], relative_directions(weather.from_deg[one], L),
+                      np.ones(int(one.sum())), "sea"))
+    for name, (H, T, d) in parts.items():
+        rows = np.flatnonzero(two & (H > 0))
+        comps.append((rows, T[rows], relative_directions(d[rows], L), H[rows] ** 2, name))
+    return comps, two
+
+
+def needed_directions(weather: Weather, landings_deg, spectra: str = "auto") -> np.ndarray:
+    """The relative directions (rounded, unique) at which the weather's seas meet the landings: those the transfer
+    functions are needed at."""
+    comps, _ = _components(weather, np.atleast_1d(np.asarray(landings_deg, dtype=float)) % 360.0, spectra)
+    return np.unique(np.concatenate([c[2].ravel() for c in comps]))
+
+
+def sea_moments(weather: Weather, landings_deg, omega, H, beta_deg, *, spectra: str = "auto",
+                sea: SpectrumPart | None = None, water_depth: float, g: float, cross_orders=(0,)):
+    r"""Spectral moments of K responses in every sea state at every landing, per unit :math:`H_s^2` of the sea
+    (module docstring: a sum over its parts for two spectra).
+
+    Parameters
+    ----------
+    weather, landings_deg
+    omega : ndarray, shape (Nw,)
+    H : ndarray of complex, shape (Nw, Nβ, K)
+        The responses' transfer functions at the relative directions ``beta_deg`` (Nβ,), which hold every one
+        the weather meets at the landings (:func:`needed_directions`).
+    cross_orders : tuple of int
+        The orders k of the cross moments returned.
+
+    Returns
+    -------
+    m : ndarray, shape (n, L, K, 3)
+        :math:`m_k = \int \omega^k |H|^2 S\,d\omega`, k = 0, 1, 2.
+    cross : ndarray, shape (n, L, K, K, len(cross_orders))
+        :math:`\int \omega^k\,\mathrm{Re}(H_i H_j^*)\,S\,d\omega` (k = 0: the covariances).
+    two : ndarray of bool, shape (n,)
+        The rows judged as two spectra.
+    """
+    L = np.atleast_1d(np.asarray(landings_deg, dtype=float)) % 360.0
+    comps, two = _components(weather, L, spectra)
+    n, w, betas = weather.n, np.asarray(omega), np.asarray(beta_deg)
+    K = H.shape[-1]
+    orders = np.asarray(cross_orders)
+    G = (np.abs(H) ** 2)[..., None] * (w[:, None, None, None] ** np.arange(3))          # (Nw, Nβ, K, 3)
+    C = np.einsum("wbi,wbj->wbij", H, H.conj()).real[..., None] * (w[:, None, None, None, None] ** orders)
+    m = np.zeros((n, L.size, K, 3))
+    cross = np.zeros((n, L.size, K, K, orders.size))
+    hs2 = np.where(two, 0.0, 1.0)                    # Σ Hs_p² of two-part rows; one-part rows per unit Hs²
+    for rows, T, beta, weight, name in comps:
+        shape = sea if name == "sea" else PART_SHAPES[name]
+        uT, iT = np.unique(T, return_inverse=True)
+        S, wt = unit_spectra(w, uT, sea=shape, water_depth=water_depth, g=g)
+        SW = S * wt                                                              # (NT, Nw)
+        ib = np.searchsorted(betas, beta)                                        # (n_sel, L)
+        for b in np.unique(ib):
+            sel_r, sel_l = np.nonzero(ib == b)
+            Sw = SW[iT[sel_r]] * weight[sel_r, None]                             # (k, Nw)
+            m[rows[sel_r], sel_l] += (Sw @ G[:, b].reshape(w.size, -1)).reshape(-1, K, 3)
+            cross[rows[sel_r], sel_l] += (Sw @ C[:, b].reshape(w.size, -1)).reshape(-1, K, K, orders.size)
+        if name != "sea":
+            hs2[rows] += weight
+    return m / hs2[:, None, None, None], cross / hs2[:, None, None, None, None], two
+
+
 def wave_limits(db: HydroDB, setup: LandingSetup, weather: Weather, landings_deg, *,
                 accept=ACCEPT_PRESETS["best"], statistics: str = DEFAULT_STATISTICS, method: str = "improved",
                 sea: SpectrumPart | None = None, water_depth: float | None = None,
@@ -170,42 +243,13 @@ def wave_limits(db: HydroDB, setup: LandingSetup, weather: Weather, landings_deg
     p_acc = accept_probability(accept)
     L = np.atleast_1d(np.asarray(landings_deg, dtype=float)) % 360.0
     n = weather.n
-    parts = {} if spectra == "one" else weather.parts
-    two = two_spectra_rows(weather, spectra)
-    # the (Tp, β, Hs², shape) components of each row × landing: one for a one-spectrum row, one per part else
-    comps = []                                      # (row index, Tp, β (n_sel, L), Hs², shape name)
-    one = ~two
-    if one.any():
-        comps.append((np.flatnonzero(one), weather.Tp[one], relative_directions(weather.from_deg[one], L), np.ones(int(one.sum())), "sea"))
-    for name, (H, T, d) in parts.items():
-        rows = np.flatnonzero(two & (H > 0))
-        comps.append((rows, T[rows], relative_directions(d[rows], L),
-                      H[rows] ** 2, name))
-    betas = np.unique(np.concatenate([c[2].ravel() for c in comps]))
-    tr = slip_transfer(db, setup, omega=omega, beta_deg=betas, method=method, mu=mu, thrust=thrust)
+    tr = slip_transfer(db, setup, omega=omega, beta_deg=needed_directions(weather, L, spectra), method=method, mu=mu,
+                       thrust=thrust)
     depth = db.water_depth if water_depth is None else water_depth
-    w = tr.omega
+    m, cross, two = sea_moments(weather, L, tr.omega, tr.H, tr.beta_deg, spectra=spectra, sea=sea, water_depth=depth,
+                                g=db.g)
+    cov = cross[..., 0]
     R = tr.capacity.size
-    G = (np.abs(tr.H) ** 2)[..., None] * (w[:, None, None, None] ** np.arange(3))     # (Nw, Nβ, R, 3)
-    C = np.einsum("wbi,wbj->wbij", tr.H, tr.H.conj()).real                               # (Nw, Nβ, R, R)
-    m = np.zeros((n, L.size, R, 3))
-    cov = np.zeros((n, L.size, R, R))
-    hs2 = np.where(two, 0.0, 1.0)                    # Σ Hs_p² of two-part rows; one-part rows per unit Hs²
-    for rows, T, beta, weight, name in comps:
-        shape = sea if name == "sea" else PART_SHAPES[name]
-        uT, iT = np.unique(T, return_inverse=True)
-        S, wt = unit_spectra(w, uT, sea=shape, water_depth=depth, g=db.g)
-        SW = S * wt                                                              # (NT, Nw)
-        ib = np.searchsorted(betas, beta)                                        # (n_sel, L)
-        for b in np.unique(ib):
-            sel_r, sel_l = np.nonzero(ib == b)
-            Sw = SW[iT[sel_r]] * weight[sel_r, None]                             # (k, Nw)
-            m[rows[sel_r], sel_l] += (Sw @ G[:, b].reshape(w.size, -1)).reshape(-1, R, 3)
-            cov[rows[sel_r], sel_l] += (Sw @ C[:, b].reshape(w.size, -1)).reshape(-1, R, R)
-        if name != "sea":
-            hs2[rows] += weight
-    m /= hs2[:, None, None, None]
-    cov /= hs2[:, None, None, None]
     keep = distinct_events(m[..., 0], tr.capacity, correlation_matrix(cov), background=tr.background)
     T_row = np.repeat(weather.Tp, L.size)                                        # the sea's cycles (Rayleigh)
     table = limiting_hs(m.reshape(n * L.size, 1, R, 3), tr.capacity, T_row, [0.0], accept=p_acc,

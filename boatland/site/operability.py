@@ -4,7 +4,7 @@ availability of access from a 1957–2010 NORA10 hindcast, all year and per wint
 
 For a vessel (a scenario) and landings at compass bearings φ_1 … φ_L, each sea state i of weight w_i (its
 occurrence, or one step of a hindcast) gets a margin M_il = H_lim,il / H_s,i at each landing
-(:func:`boatland.site.current.sea_limits`). Then
+(:func:`boatland.site.flows.sea_limits`). Then
 
 .. math:: A_l = \sum_i w_i [M_{il} \ge 1], \qquad A_{best} = \sum_i w_i [\max_l M_{il} \ge 1] \ge \max_l A_l ,
 
@@ -23,10 +23,10 @@ import numpy as np
 
 from boatland.freqdomain.landing import LandingSetup
 from boatland.freqdomain.statistics import risk_in_words
-from boatland.site.current import sea_limits
+from boatland.site.flows import sea_limits
 from boatland.site.limits import SeaLimits
 from boatland.site.tables import LimitsTable, table_limits
-from boatland.site.weather import Weather
+from boatland.site.weather import FLOWS, Weather
 from boatland.site.windows import Persistence, persistence
 from boatland.vessel.database import HydroDB
 
@@ -138,9 +138,8 @@ class Operability:
             "availability": dict(zip(self.headers(), a.tolist())), "gain_of_choosing": self.gain,
             "best_landing_share": [float(self.weather.weight[(self.best_landing == j) & judged].sum())
                                    for j in range(lim.landings_deg.size)],
-            "not_used": list(self.weather.carried) + (["current_speed", "current_direction_from_deg"]
-                                                      if lim.covered is not None and self.weather.current is not None
-                                                      else []),
+            "not_used": [c for what, cols in FLOWS.items() if getattr(self.weather, what) is not None
+                         for c in cols] if lim.covered is not None else [],
         }
         if self.weather.time is not None:
             mon = self.monthly()
@@ -172,11 +171,8 @@ class Operability:
         if lim.covered is not None:
             lines.append(f"  {100 * self.not_covered:.1f} % of the time outside the table (counted as not workable)"
                          + ("; the total sea judged (the table is for one spectrum)" if self.weather.parts else "")
-                         + ("; the weather's current not used (the table is its campaign's)"
-                            if self.weather.current is not None else ""))
-        if self.weather.carried:
-            lines.append(f"  not used: {', '.join(self.weather.carried)} (the scenario's own wind, if any, acts in every "
-                         "sea state)")
+                         + "".join(f"; the weather's {what} not used (the table is its campaign's)"
+                                   for what in FLOWS if getattr(self.weather, what) is not None))
         width = max(12, *(len(h) + 2 for h in head))
         row = "  {:<10}" + "".join(f"{{:>{width}}}" for _ in head)
         lines.append(row.format("", *head))
@@ -214,7 +210,7 @@ def operability(db: HydroDB, setup: LandingSetup, weather: Weather, landings_deg
                 window_hours: float | None = None, **limits_kw) -> Operability:
     """The vessel's access at the landings ``landings_deg`` (compass bearings) over ``weather`` (module
     docstring), judged by the screening; ``window_hours`` the access window of a hindcast; ``limits_kw`` as
-    :func:`boatland.site.current.sea_limits` (``current_setup`` when the weather has a current)."""
+    :func:`boatland.site.flows.sea_limits` (``flow_setup`` when the weather has a current or a wind)."""
     return _judged(name, weather, sea_limits(db, setup, weather, landings_deg, **limits_kw), window_hours)
 
 

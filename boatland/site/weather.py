@@ -14,9 +14,14 @@ CSV (``#`` comment lines allowed; a header row names the columns, in any order):
   the sea is then judged as two spectra (Grøtting 2015 §3.2.1 eq. 3.41–3.45, :mod:`boatland.site.limits`);
 - ``current_speed`` [m/s] and ``current_direction_from_deg`` (compass, where the water comes from — the
   site frame's one convention; an oceanographic "towards" direction is this + 180°): each sea state is judged in
-  its own current (:mod:`boatland.site.current`);
-- ``wind_speed`` [m/s], ``wind_direction_from_deg`` are recognised and carried, but not used yet (the
-  scenario's own wind, if any, acts in every sea state): said.
+  its own current (:mod:`boatland.site.flows`);
+- ``wind_speed`` [m/s] and ``wind_direction_from_deg`` (compass, where the wind comes from, as meteorology gives
+  it): each sea state is judged in its own wind (:mod:`boatland.site.flows`). The speed is taken as the 1-hour mean
+  at 10 m above the sea that a scenario's ``[wind] speed`` is (:mod:`boatland.loads.wind`) — an assumption for a
+  hindcast's hourly 10-m wind (ERA5 and NORA3 give instantaneous or hourly values; a 10-minute mean is about 6 %
+  above the hourly one at 10 m/s by the NPD model's averaging-time factor, DNV-RP-C205 (2010) §2.3.2.11 — divide a
+  10-minute mean by that to give the hourly one). ERA5 gives ``u10``/``v10``: speed = √(u² + v²), direction
+  from = atan2(−u, −v) in compass degrees.
 
 netCDF (netCDF-4, i.e. HDF5, read with h5py): one-dimensional variables over ``time`` with the names above, or
 the CF standard names ``sea_surface_wave_significant_height``,
@@ -46,13 +51,14 @@ SUM_TOLERANCE = 0.01
 
 #: The partitions a weather file may hold (name → column prefix).
 PARTS = ("wind_sea", "swell")
-#: The current's columns (speed [m/s], compass direction it comes from [deg]).
+#: The current's and the wind's columns (speed [m/s], compass direction it comes from [deg]).
 CURRENT = ("current_speed", "current_direction_from_deg")
-#: Columns recognised but not used by the operability yet.
-CARRIED = ("wind_speed", "wind_direction_from_deg")
+WIND = ("wind_speed", "wind_direction_from_deg")
+FLOWS = {"current": CURRENT, "wind": WIND}
 _CF = {"Hs": "sea_surface_wave_significant_height",
        "Tp": "sea_surface_wave_period_at_variance_spectral_density_maximum",
-       "direction_from_deg": "sea_surface_wave_from_direction"}
+       "direction_from_deg": "sea_surface_wave_from_direction",
+       "wind_speed": "wind_speed", "wind_direction_from_deg": "wind_from_direction"}
 
 
 @dataclass(frozen=True, eq=False)
@@ -72,10 +78,8 @@ class Weather:
     parts : dict
         Partitions present (``"wind_sea"``, ``"swell"``) → (Hs, Tp, from_deg) arrays (n,); Hs 0 where a row
         has none.
-    current : tuple of ndarray or None
+    current, wind : tuple of ndarray or None
         (speed [m/s], compass direction it comes from [deg]) per row, when the weather has them.
-    carried : tuple of str
-        Columns read but not used (wind).
     source : str
     """
 
@@ -87,7 +91,7 @@ class Weather:
     step_hours: float | None = None
     parts: dict = field(default_factory=dict)
     current: tuple | None = None
-    carried: tuple = ()
+    wind: tuple | None = None
     source: str = "<weather>"
 
     @property
@@ -110,7 +114,7 @@ class Weather:
 
     @classmethod
     def scatter(cls, Hs, Tp, from_deg, occurrence, source: str = "<scatter>", parts=None, current=None,
-                lines=None) -> "Weather":
+                wind=None, lines=None) -> "Weather":
         """A scatter diagram from arrays (checked as a file's rows; occurrences normalised; ``lines``: each row's
         line in its file, for the messages)."""
         H, T, d, p = _columns(source, Hs=Hs, Tp=Tp, direction_from_deg=from_deg, occurrence=occurrence)
@@ -125,11 +129,12 @@ class Weather:
             warnings.warn(f"{source}: occurrences sum to {total:.6g}, not 1: normalised (read as relative "
                           "frequencies, e.g. hours or counts)", BoatlandWarning, stacklevel=2)
         return cls(Hs=H, Tp=T, from_deg=d % 360.0, weight=p / total, parts=_parts(source, parts, H.size, lines),
-                   current=_current(source, current, H.size, lines), source=source)
+                   current=_flow(source, "current", current, H.size, lines),
+                   wind=_flow(source, "wind", wind, H.size, lines), source=source)
 
     @classmethod
     def series(cls, time, Hs, Tp, from_deg, source: str = "<hindcast>", parts=None, current=None,
-               carried=(), lines=None) -> "Weather":
+               wind=None, lines=None) -> "Weather":
         """A hindcast from arrays: ``time`` (datetime64 or ISO strings), regular and increasing (``lines``: each
         row's line in its file, for the messages)."""
         t = np.asarray(time).astype("datetime64[s]")
@@ -139,22 +144,25 @@ class Weather:
         step = _regular_step(source, t, lines)
         return cls(Hs=H, Tp=T, from_deg=d % 360.0, weight=np.full(H.size, 1.0 / H.size), time=t,
                    step_hours=step / 3600.0, parts=_parts(source, parts, H.size, lines),
-                   current=_current(source, current, H.size, lines), carried=tuple(carried), source=source)
+                   current=_flow(source, "current", current, H.size, lines),
+                   wind=_flow(source, "wind", wind, H.size, lines), source=source)
 
     def rotated(self, angle_deg: float) -> "Weather":
         """Every direction turned by ``angle_deg`` (the site turned; for tests of the compass)."""
         parts = {k: (h, t, (d + angle_deg) % 360.0) for k, (h, t, d) in self.parts.items()}
-        current = None if self.current is None else (self.current[0], (self.current[1] + angle_deg) % 360.0)
-        return dataclasses.replace(self, from_deg=(self.from_deg + angle_deg) % 360.0, parts=parts, current=current)
+        turned = {k: None if f is None else (f[0], (f[1] + angle_deg) % 360.0)
+                  for k, f in (("current", self.current), ("wind", self.wind))}
+        return dataclasses.replace(self, from_deg=(self.from_deg + angle_deg) % 360.0, parts=parts, **turned)
 
     def take(self, rows) -> "Weather":
         """The sea states ``rows`` (indices) alone, as a scatter of their weights (for judging a subset)."""
         i = np.asarray(rows, dtype=int)
         parts = {k: tuple(a[i] for a in v) for k, v in self.parts.items()}
-        current = None if self.current is None else tuple(a[i] for a in self.current)
+        flows = {k: None if f is None else tuple(a[i] for a in f) for k, f in (("current", self.current),
+                                                                                  ("wind", self.wind))}
         return dataclasses.replace(self, Hs=self.Hs[i], Tp=self.Tp[i], from_deg=self.from_deg[i],
                                    weight=self.weight[i], time=None if self.time is None else self.time[i],
-                                   parts=parts, current=current)
+                                   parts=parts, **flows)
 
     def describe(self) -> str:
         """One line: what the weather is."""
@@ -208,16 +216,18 @@ def _parts(source: str, parts, n: int, lines=None) -> dict:
     return out
 
 
-def _current(source: str, current, n: int, lines=None):
-    if current is None:
+def _flow(source: str, what: str, flow, n: int, lines=None):
+    """The current's or the wind's (speed, compass from) per row, checked."""
+    if flow is None:
         return None
-    U, d = (np.atleast_1d(np.asarray(c, dtype=float)) for c in current)
+    U, d = (np.atleast_1d(np.asarray(c, dtype=float)) for c in flow)
     if not (U.shape == d.shape == (n,)):
-        raise BoatlandInputError(f"{source}: the current has {U.size} rows for {n}")
+        raise BoatlandInputError(f"{source}: the {what} has {U.size} rows for {n}")
     bad = np.flatnonzero(~np.isfinite(U) | (U < 0) | ~np.isfinite(d))
     if bad.size:
         i = int(bad[0])
-        raise BoatlandInputError(f"{source}: {_where(i, lines)}: current_speed = {U[i]:g}, current_direction_from_deg = "
+        speed, direction = FLOWS[what]
+        raise BoatlandInputError(f"{source}: {_where(i, lines)}: {speed} = {U[i]:g}, {direction} = "
                                  f"{d[i]:g}: need a speed ≥ 0 m/s and a direction")
     return U, d % 360.0
 
@@ -285,17 +295,20 @@ def _read_csv(path: Path) -> Weather:
     for p, cols in part_cols.items():
         if any(c not in header for c in cols):
             raise BoatlandInputError(f"{at}: partition {p}: need all of {', '.join(cols)}")
-    carried = tuple(c for c in CARRIED if c in header)
-    has_current = [c for c in CURRENT if c in header]
-    if has_current and len(has_current) != len(CURRENT):
-        raise BoatlandInputError(f"{at}: the current needs both {' and '.join(CURRENT)}")
+    flow_cols = {}
+    for what, cols in FLOWS.items():
+        present = [c for c in cols if c in header]
+        if present and len(present) != len(cols):
+            raise BoatlandInputError(f"{at}: the {what} needs both {' and '.join(cols)}")
+        if present:
+            flow_cols[what] = cols
     numeric = need + ([] if kind == "time" else ["occurrence"]) + [c for cs in part_cols.values() for c in cs] \
-        + list(carried) + has_current
+        + [c for cs in flow_cols.values() for c in cs]
     idx = {h: i for i, h in enumerate(header)}
     n = len(rows) - 1
     data = {k: np.empty(n) for k in numeric}
     times = []
-    optional = {c for cs in part_cols.values() for c in cs} | set(carried) | set(has_current)
+    optional = {c for cs in part_cols.values() for c in cs} | {c for cs in flow_cols.values() for c in cs}
     for r, ((lineno, _), row) in enumerate(zip(lines[1:], rows[1:])):
         if len(row) != len(header):
             raise BoatlandInputError(f"{path}: line {lineno}: {len(row)} fields for {len(header)} columns")
@@ -319,18 +332,19 @@ def _read_csv(path: Path) -> Weather:
         if kind == "time":
             times.append(_time(path, lineno, row[idx["time"]]))
     parts = {p: tuple(data[c] for c in cols) for p, cols in part_cols.items()}
-    current = tuple(data[c] for c in CURRENT) if has_current else None
-    if current is not None:
-        bad = np.flatnonzero(~np.isfinite(current[0]) | ~np.isfinite(current[1]))
+    flows = {}
+    for what, cols in flow_cols.items():
+        flows[what] = tuple(data[c] for c in cols)
+        bad = np.flatnonzero(~np.isfinite(flows[what][0]) | ~np.isfinite(flows[what][1]))
         if bad.size:
-            raise BoatlandInputError(f"{path}: line {lines[bad[0] + 1][0]}: the current's speed or direction is empty")
+            raise BoatlandInputError(f"{path}: line {lines[bad[0] + 1][0]}: the {what}'s speed or direction is empty")
     at_line = [ln for ln, _ in lines[1:]]
     if kind == "occurrence":
         return Weather.scatter(data["Hs"], data["Tp"], data["direction_from_deg"], data["occurrence"],
-                               source=str(path), parts=parts, current=current, lines=at_line)
+                               source=str(path), parts=parts, lines=at_line, **flows)
     t = np.array(times, dtype="datetime64[s]")
     return Weather.series(t, data["Hs"], data["Tp"], data["direction_from_deg"], source=str(path), parts=parts,
-                          current=current, carried=carried, lines=at_line)
+                          lines=at_line, **flows)
 
 
 _ISO = re.compile(r"^\d{4}-\d{2}-\d{2}([T ]\d{2}(:\d{2}(:\d{2}(\.\d+)?)?)?)?Z?$")
@@ -401,13 +415,19 @@ def _read_netcdf(path: Path) -> Weather:
                     raise BoatlandInputError(f"{path}: partition {p}: need {p}_Hs, {p}_Tp and "
                                              f"{p}_direction_from_deg")
                 parts[p] = tuple(_decoded(v) for v in vs)
-        carried = tuple(c for c in CARRIED if c in f)
-        cur = [find(c, required=False) for c in CURRENT]
-        if any(v is not None for v in cur) and any(v is None for v in cur):
-            raise BoatlandInputError(f"{path}: the current needs both {' and '.join(CURRENT)}")
-        current = tuple(_decoded(v) for v in cur) if cur[0] is not None else None
+        flows = {}
+        for what, names in FLOWS.items():
+            vs = [find(c, required=False) for c in names]
+            if any(v is not None for v in vs) and any(v is None for v in vs):
+                raise BoatlandInputError(f"{path}: the {what} needs both {' and '.join(names)}")
+            if vs[0] is not None:
+                flows[what] = tuple(_decoded(v) for v in vs)
+                bad = np.flatnonzero(~np.isfinite(flows[what][0]) | ~np.isfinite(flows[what][1]))
+                if bad.size:
+                    raise BoatlandInputError(f"{path}: the {what} has no value at time {t[bad[0]]} ({bad.size} missing "
+                                             "in all): fill or cut the gap")
     return Weather.series(t, cols["Hs"], cols["Tp"], cols["direction_from_deg"], source=str(path), parts=parts,
-                          current=current, carried=carried)
+                          **flows)
 
 
 def _decoded(var) -> np.ndarray:

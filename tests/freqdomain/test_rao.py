@@ -125,7 +125,8 @@ def test_hinged_motion_is_in_equilibrium_with_the_reaction(db):
     np.testing.assert_allclose(comp[..., 0], -(k + 1j * d * W[:, None, None]) * motion[..., 0], rtol=1e-9)
     assert np.max(np.abs(motion[..., 1:])) < 1e-10 * np.max(np.abs(motion[..., 0]))
     # two points on one plane pinned sideways: the split is indeterminate, shared equally (as the time domain)
-    np.testing.assert_allclose(comp[:, :, 0, 2], comp[:, :, 1, 2], rtol=1e-8)
+    # (where the sideways load is zero — head seas — both are round-off of the forces' scale)
+    np.testing.assert_allclose(comp[:, :, 0, 2], comp[:, :, 1, 2], rtol=1e-8, atol=1e-14 * np.abs(comp).max())
 
 
 def test_spring_normal_tends_to_the_rigid_hinge(db):
