@@ -8,7 +8,7 @@ Run: ``python bench/bench_operability.py [--repeat 3]``. Prints Markdown.
    databases, the weather read, both limits tables, windows, the tables printed) — wall time, best and median
    of ``--repeat``; the same with ``--one-spectrum``; with the model's M2 tidal current (1.2 m/s, flood from
    45°, ebb from 225°) — each sea state judged in its own current; with the model's own wind (the one its wind
-   sea grows from), and with both.
+   sea grows from), and with both (ctv_landing alone: ctv24's database has no topsides for the wind's areas).
 2. **In this process** (warm): reading the CSV, the screening's transfer functions for every direction the
    landings need (one per vessel), the limits of every sea state at every landing, the windows.
 
@@ -50,8 +50,8 @@ def hourly_year(folder: Path, tide: bool = False, wind: bool = False) -> Path:
     return path
 
 
-def end_to_end(code: Path, weather: Path, *extra: str) -> float:
-    args = [sys.executable, "-m", "boatland", "operability", "ctv_landing", "ctv24_landing", str(weather),
+def end_to_end(code: Path, weather: Path, *extra: str, scenarios=("ctv_landing", "ctv24_landing")) -> float:
+    args = [sys.executable, "-m", "boatland", "operability", *scenarios, str(weather),
             *sum((["--landing", b] for b in LANDINGS), []), "--window", "4", *extra]
     env = {**os.environ, "PYTHONPATH": str(code)}
     t = time.perf_counter()
@@ -166,11 +166,12 @@ def main() -> None:
         walls = [end_to_end(REPO, tidal) for _ in range(max(1, args.repeat // 2))]
         print(f"| two, each sea state in its M2 tidal current (1.2 m/s) | {min(walls):.2f} | "
               f"{statistics.median(walls):.2f} | {len(walls)} |")
+        # ctv24's database has no topsides to measure the wind's areas on: the windy rows are ctv27's alone
         for tide, what in ((False, "its own wind"), (True, "its own wind and M2 tidal current")):
             windy = hourly_year(Path(tmp), tide=tide, wind=True)
-            walls = [end_to_end(REPO, windy) for _ in range(max(1, args.repeat // 2))]
-            print(f"| two, each sea state in {what} | {min(walls):.2f} | {statistics.median(walls):.2f} | "
-                  f"{len(walls)} |")
+            walls = [end_to_end(REPO, windy, scenarios=("ctv_landing",)) for _ in range(max(1, args.repeat // 2))]
+            print(f"| two, each sea state in {what} (ctv_landing alone) | {min(walls):.2f} | "
+                  f"{statistics.median(walls):.2f} | {len(walls)} |")
         print()
         print("| step (this process, warm) | s |")
         print("|---|---|")

@@ -114,6 +114,18 @@ def cmd(args) -> int:
     if len(set(np.round(landings, 6))) != landings.size:
         raise BoatlandInputError("--landing: the same bearing is given twice")
     window = args.window if args.window is not None else DEFAULT_WINDOW_HOURS
+    if weather.current is not None or weather.wind is not None:
+        # a scenario that cannot take the weather's flows (no hull or topsides to measure their areas on) says so
+        # now, before any vessel's work
+        from boatland.landing.law import NoStaticEquilibrium
+
+        for scenario, db in loaded:
+            if scenario is not None:
+                try:
+                    flow_setups(scenario, db)(None if weather.current is None else (0.5, 90.0),
+                                              None if weather.wind is None else (5.0, 90.0))
+                except NoStaticEquilibrium:       # physics, not a bad input: judged node by node below
+                    pass
     froms = [weather.from_deg] + ([] if args.one_spectrum else [d[h > 0] for h, _, d in weather.parts.values()])
     results = []
     for scenario, db in loaded:
@@ -171,7 +183,7 @@ def cmd(args) -> int:
 
 
 def _progress(name: str):
-    """``progress(done, total)`` of the flows' nodes: a line on stderr about every 10 %."""
+    """``progress(done, total)`` of the flows' nodes and the limits' blocks: a line on stderr about every 10 %."""
     import time
 
     t0 = time.monotonic()
@@ -180,6 +192,6 @@ def _progress(name: str):
     def tick(done: int, total: int) -> None:
         if done == total or done - said[0] >= max(1, total // 10):
             said[0] = done
-            print(f"  {name}: flow node {done}/{total} ({time.monotonic() - t0:.0f} s)", file=sys.stderr,
-                  flush=True)
+            print(f"  {name}: {done}/{total} (the flows' nodes, then the limits) ({time.monotonic() - t0:.0f} s)",
+                  file=sys.stderr, flush=True)
     return tick

@@ -57,7 +57,7 @@ import numpy as np
 
 from boatland.freqdomain.landing import LandingSetup
 from boatland.freqdomain.screening import default_omega, margin_rows, slow_swing
-from boatland.freqdomain.statistics import (ACCEPT_PRESETS, ACCESS_DURATION, DEFAULT_STATISTICS, SlowSwing,
+from boatland.freqdomain.statistics import (ACCEPT_PRESETS, ACCESS_DURATION, DEFAULT_STATISTICS, MODES, SlowSwing,
                                             accept_probability, correlation_matrix, distinct_events, limiting_hs)
 from boatland.landing.law import NoStaticEquilibrium
 from boatland.sea.spectra import SpectrumPart
@@ -81,6 +81,8 @@ CURRENT_DIRECTION_STEP = 15.0
 #: the sea state's own wind, 30 seeded winds up to 15 m/s: tests/site/test_flows.py.
 WIND_SPEED_STEP = 2.5
 WIND_DIRECTION_STEP = 10.0
+#: Cells (sea state × landing) whose limits are solved together, between two words of progress.
+SOLVE_BLOCK = 4096
 
 
 def flow_setups(scenario, db: HydroDB, *, roll_limit_deg: float | None = None):
@@ -128,7 +130,7 @@ def sea_limits(db: HydroDB, setup: LandingSetup, weather: Weather, landings_deg,
         ``flow_setup(current, wind) -> LandingSetup`` (:func:`flow_setups`); required when the weather has a
         current or a wind.
     progress : callable, optional
-        ``progress(done, total)`` over the nodes.
+        ``progress(done, total)`` over the nodes, then the blocks of sea states whose limits are solved.
     accept, statistics, method, sea, water_depth, access_duration, mu, thrust, spectra, omega
         As :func:`~boatland.site.limits.wave_limits`.
 
@@ -198,8 +200,16 @@ def _in_flows(db: HydroDB, weather: Weather, L: np.ndarray, flow_setup, progress
                 sel = inv.ravel() == q
                 pairs.setdefault(key, []).append((r[sel], c[sel], w[r[sel], c[sel]]))
     currents = sorted({k[:2] for k in pairs})
-    total = len(currents) + len(pairs)
+    N = n * nL
+    blocks = -(-N // SOLVE_BLOCK)
+    total = len(currents) + len(pairs) + blocks
     done = 0
+
+    def tick():
+        nonlocal done
+        done += 1
+        if progress is not None:
+            progress(done, total)
     base = flow_setup(None, None)
     base.near_pile(db)         # the pile's wave for every direction, once: each node's tables read it
     omega = default_omega(db) if kw["omega"] is None else np.asarray(kw["omega"], dtype=float)
@@ -222,7 +232,7 @@ def _in_flows(db: HydroDB, weather: Weather, L: np.ndarray, flow_setup, progress
     failed_w = np.zeros((n, nL))
     failed: list[str] = []
     swing_any = False
-    names = None
+    names = tuple(f"{m} {c}" for c in range(base.n_points) for m in MODES) + ("roll",)
     for ck, cj in currents:
         current = flow_of(ck, cj, CURRENT_SPEED_STEP, CURRENT_DIRECTION_STEP)
         mine = {k: v for k, v in pairs.items() if k[:2] == (ck, cj)}
@@ -242,9 +252,7 @@ def _in_flows(db: HydroDB, weather: Weather, L: np.ndarray, flow_setup, progress
             wave = C
         except NoStaticEquilibrium as exc:
             failed.append(_where(current, None, exc))
-        done += 1
-        if progress is not None:
-            progress(done, total)
+        tick()
         for (_, _, wk, wj), cells in mine.items():
             wind = flow_of(wk, wj, WIND_SPEED_STEP, WIND_DIRECTION_STEP)
             # one entry per cell: two corners can be one node (at speed 0 the directions are one node)
@@ -253,8 +261,8 @@ def _in_flows(db: HydroDB, weather: Weather, L: np.ndarray, flow_setup, progress
             ww = np.bincount(inv.ravel(), weights=np.concatenate([c[2] for c in cells]))
             rr, ll = cell // nL, cell % nL
             try:
-                if wave is None:
-                    raise NoStaticEquilibrium("no equilibrium in this current")
+                if wave is None:                       # no equilibrium in this current: said above
+                    raise NoStaticEquilibrium
                 s = adjusted(flow_setup(current, wind))
                 J0 = s.response(db, omega[:1], np.array([0.0])).J_static
                 D, a = margin_rows(s, J0)
@@ -263,9 +271,7 @@ def _in_flows(db: HydroDB, weather: Weather, L: np.ndarray, flow_setup, progress
                 if wave is not None:
                     failed.append(_where(current, wind, exc))
                 failed_w[rr, ll] += ww                 # (cells unique: += is safe)
-                done += 1
-                if progress is not None:
-                    progress(done, total)
+                tick()
                 continue
             Dm = _margin_map(D)                                   # (R, 3Np + 1)
             Cq = wave[where[rr], ll]                              # (k, K, K, 3)
@@ -278,12 +284,7 @@ def _in_flows(db: HydroDB, weather: Weather, L: np.ndarray, flow_setup, progress
                 SW[rr, ll] += ww
                 LAM[rr, ll] += ww * swing.linear_share
                 COR[rr, ll] += ww[:, None, None] * swing.correlation[None]
-            if names is None:
-                names = tuple(f"{m} {c}" for c in range(base.n_points) for m in ("down", "up", "left", "right")) + \
-                    ("roll",)
-            done += 1
-            if progress is not None:
-                progress(done, total)
+            tick()
     healthy = 1.0 - failed_w
     ok = healthy > 1e-12
     scale = np.where(ok, 1.0 / np.where(ok, healthy, 1.0), 0.0)
@@ -294,15 +295,21 @@ def _in_flows(db: HydroDB, weather: Weather, L: np.ndarray, flow_setup, progress
     has = SW > 1e-12
     LAM = np.where(has, LAM / np.where(has, SW, 1.0), 1.0)
     COR = np.where(has[..., None, None], COR / np.where(has, SW, 1.0)[..., None, None], 1.0)
-    N = n * nL
     keep = distinct_events(M[..., 0], CAP, correlation_matrix(COV),
-                           background=SlowSwing(BG, LAM, COR) if swing_any else None)
-    background = SlowSwing(BG.reshape(N, 1, R, 3), LAM.reshape(N, 1), COR.reshape(N, 1, R, R)) if swing_any else None
-    table = limiting_hs(M.reshape(N, 1, R, 3), CAP.reshape(N, 1, R), np.repeat(weather.Tp, nL), [0.0], accept=p_acc,
-                        statistics=kw["statistics"], access_duration=kw["access_duration"], method=kw["method"],
-                        names=names, keep=keep.reshape(N, 1, R), background=background)
-    H = np.where(ok, table.Hs.reshape(n, nL) * healthy, 0.0)
-    gov = np.where(ok, table.governing.reshape(n, nL), "no static equilibrium").astype(object)
+                           background=SlowSwing(BG, LAM, COR) if swing_any else None).reshape(N, 1, R)
+    M, CAP, BG, LAM, COR = M.reshape(N, 1, R, 3), CAP.reshape(N, 1, R), BG.reshape(N, 1, R, 3), LAM.reshape(N, 1), \
+        COR.reshape(N, 1, R, R)
+    T_row = np.repeat(weather.Tp, nL)
+    Hs, governing = np.empty(N), np.empty(N, dtype=object)
+    for b in range(blocks):            # each cell solved on its own: in blocks, to say how far it is
+        i = slice(b * SOLVE_BLOCK, min(N, (b + 1) * SOLVE_BLOCK))
+        table = limiting_hs(M[i], CAP[i], T_row[i], [0.0], accept=p_acc, statistics=kw["statistics"],
+                            access_duration=kw["access_duration"], method=kw["method"], names=names, keep=keep[i],
+                            background=SlowSwing(BG[i], LAM[i], COR[i]) if swing_any else None)
+        Hs[i], governing[i] = table.Hs[:, 0], table.governing[:, 0]
+        tick()
+    H = np.where(ok, Hs.reshape(n, nL) * healthy, 0.0)
+    gov = np.where(ok, governing.reshape(n, nL), "no static equilibrium").astype(object)
     two = two_spectra_rows(weather, kw["spectra"])
     hs = sea_heights(weather, two)
     with np.errstate(divide="ignore", invalid="ignore"):

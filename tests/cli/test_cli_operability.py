@@ -92,3 +92,33 @@ def test_bad_input_is_one_line(tmp_path, args, words):
         return
     one_line_error(r, *words)
     assert hc.read_text(encoding="utf-8") == HINDCAST.read_text(encoding="utf-8")
+
+
+def _windy(tmp_path, rows=24):
+    """The example's first ``rows`` sea states with the wind its wind sea grows from (the generator's model wind,
+    docs/make_example_hindcast.py) — written as a planner's hindcast with wind columns."""
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("make_example_hindcast", ROOT / "docs" / "make_example_hindcast.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    lines = [ln for ln in mod.make(wind=True).splitlines() if not ln.startswith("#")]
+    p = tmp_path / "windy.csv"
+    p.write_text("\n".join(lines[:rows + 1]) + "\n")
+    return p
+
+
+@pytest.mark.slow
+def test_each_sea_state_in_its_own_wind(tmp_path):
+    """The wind columns are used (not named as unused), the source says so, progress is shown; a vessel whose
+    database cannot take a wind (ctv24: no topsides to measure the areas on) is refused in one line before any
+    vessel's work, naming the keys that would do."""
+    w = _windy(tmp_path)
+    r = run("ctv_landing", w, "--landing", "45", "--landing", "225", "--json")
+    assert r.returncode == 0, r.stderr
+    res = json.loads(r.stdout)["results"][0]
+    assert "own wind" in res["limits"] and res["not_used"] == []
+    assert "in each sea state's own wind" in r.stderr and "the flows' nodes, then the limits" in r.stderr
+    r = run("ctv_landing", "ctv24_landing", w, "--landing", "45")
+    one_line_error(r, "ctv24_landing.toml", "topsides", "wind.area_x")
+    assert "the flows' nodes" not in r.stderr
