@@ -244,6 +244,14 @@ class ContactLaw:
             object.__setattr__(self, name, a)
         if self.follows not in ("fixed", "fender", "tube"):
             raise ValueError(f"follows must be 'fixed', 'fender' or 'tube', got {self.follows!r}")
+        out = []                        # the restrained directions, made once (the statics ask for them often)
+        for c in range(self.n_points):
+            tv, th = tangents(self.normals[c])
+            dirs = [(self.normals[c], self.k_n[c], self.c_n[c]), (tv, self.k_t[c], self.c_t[c])]
+            if self.sideways:
+                dirs.append((th, self.k_t[c], self.c_t[c]))
+            out.append([(d, k, cc) for d, k, cc in dirs if k > 0 or cc > 0])
+        object.__setattr__(self, "_directions", out)
 
     @property
     def n_points(self) -> int:
@@ -251,14 +259,7 @@ class ContactLaw:
 
     def directions(self):
         """Per contact: the list of (unit direction d (3,), k, c) it restrains, normal first."""
-        out = []
-        for c in range(self.n_points):
-            tv, th = tangents(self.normals[c])
-            dirs = [(self.normals[c], self.k_n[c], self.c_n[c]), (tv, self.k_t[c], self.c_t[c])]
-            if self.sideways:
-                dirs.append((th, self.k_t[c], self.c_t[c]))
-            out.append([(d, k, cc) for d, k, cc in dirs if k > 0 or cc > 0])
-        return out
+        return self._directions
 
     def assemble(self, omega=None):
         r"""The restraint in matrix form.

@@ -188,22 +188,34 @@ def sea_moments(weather: Weather, landings_deg, omega, H, beta_deg, *, spectra: 
     n, w, betas = weather.n, np.asarray(omega), np.asarray(beta_deg)
     K = H.shape[-1]
     orders = np.asarray(cross_orders)
-    G = (np.abs(H) ** 2)[..., None] * (w[:, None, None, None] ** np.arange(3))          # (Nw, Nβ, K, 3)
-    C = np.einsum("wbi,wbj->wbij", H, H.conj()).real[..., None] * (w[:, None, None, None, None] ** orders)
+    wk = w[:, None, None] ** np.arange(3)                                             # (Nw, 1, 3)
+    wo = w[:, None, None, None] ** orders                                              # (Nw, 1, 1, O)
     m = np.zeros((n, L.size, K, 3))
     cross = np.zeros((n, L.size, K, K, orders.size))
     hs2 = np.where(two, 0.0, 1.0)                    # Σ Hs_p² of two-part rows; one-part rows per unit Hs²
+    made: dict = {}                                  # per direction: |H|² ω^k and Re(H_i H_j*) ω^k, (Nw, ·)
+
+    def products(b):
+        if b not in made:
+            h = H[:, b]
+            made[b] = ((np.abs(h) ** 2)[..., None] * wk).reshape(w.size, -1), \
+                (np.einsum("wi,wj->wij", h, h.conj()).real[..., None] * wo).reshape(w.size, -1)
+        return made[b]
+
     for rows, T, beta, weight, name in comps:
         shape = sea if name == "sea" else PART_SHAPES[name]
         uT, iT = np.unique(T, return_inverse=True)
         S, wt = unit_spectra(w, uT, sea=shape, water_depth=water_depth, g=g)
         SW = S * wt                                                              # (NT, Nw)
         ib = np.searchsorted(betas, beta)                                        # (n_sel, L)
-        for b in np.unique(ib):
-            sel_r, sel_l = np.nonzero(ib == b)
+        order = np.argsort(ib, axis=None, kind="stable")                         # the cells of each direction,
+        flat = ib.ravel()[order]                                                 # row-major within it
+        for g_cells in np.split(order, np.flatnonzero(np.diff(flat)) + 1):
+            sel_r, sel_l = np.unravel_index(g_cells, ib.shape)
+            Gb, Cb = products(int(ib[sel_r[0], sel_l[0]]))
             Sw = SW[iT[sel_r]] * weight[sel_r, None]                             # (k, Nw)
-            m[rows[sel_r], sel_l] += (Sw @ G[:, b].reshape(w.size, -1)).reshape(-1, K, 3)
-            cross[rows[sel_r], sel_l] += (Sw @ C[:, b].reshape(w.size, -1)).reshape(-1, K, K, orders.size)
+            m[rows[sel_r], sel_l] += (Sw @ Gb).reshape(-1, K, 3)
+            cross[rows[sel_r], sel_l] += (Sw @ Cb).reshape(-1, K, K, orders.size)
         if name != "sea":
             hs2[rows] += weight
     return m / hs2[:, None, None, None], cross / hs2[:, None, None, None, None], two
