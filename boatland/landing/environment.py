@@ -27,12 +27,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from boatland.errors import BoatlandInputError
-from boatland.landing.law import SteadyLoad
+from boatland.landing.law import NoStaticEquilibrium, SteadyLoad
 from boatland.loads.current import Current
 from boatland.loads.drag import DragLoad, add_drag
 from boatland.rigid import rotation_matrix
 
-__all__ = ["Environment"]
+__all__ = ["Environment", "TrimImpossible"]
 
 #: Drag loads per database and scenario table (measuring a CTV's silhouettes takes ~0.3 s; a campaign asks
 #: for the same ones for every trial).
@@ -55,6 +55,12 @@ def _cached_load(db, what: str, spec) -> DragLoad:
     if key not in per_db:
         per_db[key] = spec.load(db)
     return per_db[key]
+
+
+class TrimImpossible(BoatlandInputError, NoStaticEquilibrium):
+    """The skipper's trim cannot balance the steady yaw moment (:meth:`Environment.trim`): for one scenario a bad
+    input (one line, exit status 2); where the flows vary from sea state to sea state (a site's weather,
+    :mod:`boatland.site.flows`), a current and wind the landing cannot be held in, like no static equilibrium."""
 
 
 @dataclass(frozen=True, eq=False)
@@ -145,8 +151,8 @@ class Environment:
 
         Raises
         ------
-        BoatlandInputError
-            The push cannot balance the moment within ±60°.
+        TrimImpossible
+            The push cannot balance the moment within ±60° (a :class:`~boatland.errors.BoatlandInputError`).
         """
         F = self.current_force() + self.mean_wind()
         thr = scenario.thrust
@@ -159,9 +165,9 @@ class Environment:
         A, B, c = (xT - xf), -(yT - yf), -M / thr.force
         r = math.hypot(A, B)
         if r == 0.0 or abs(c) > r * math.sin(math.radians(60.0)):
-            raise BoatlandInputError(f"{scenario.source}: thrust.direction_deg = 'trim': the push of {thr.force / 1e3:g} kN "
-                                     f"cannot balance the steady yaw moment {M / 1e3:.0f} kN m of the current and wind "
-                                     "about the fender within ±60°: push harder, or give thrust.direction_deg")
+            raise TrimImpossible(f"{scenario.source}: thrust.direction_deg = 'trim': the push of {thr.force / 1e3:g} kN "
+                                 f"cannot balance the steady yaw moment {M / 1e3:.0f} kN m of the current and wind "
+                                 "about the fender within ±60°: push harder, or give thrust.direction_deg")
         phi, s = math.atan2(B, A), math.asin(c / r)
         wrap = lambda a: (a + math.pi) % (2 * math.pi) - math.pi  # noqa: E731
         a = min((wrap(s - phi), wrap(math.pi - s - phi)), key=abs)   # the solution nearer straight ahead

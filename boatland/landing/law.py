@@ -170,8 +170,10 @@ def solve_saddle_stack(Z: np.ndarray, Cmat: np.ndarray, F: np.ndarray) -> tuple[
     method, e.g. Nocedal & Wright 2006, *Numerical Optimization*, §16.2): with :math:`N` an orthonormal basis of
     C's null space, :math:`x = N y`, :math:`(N^H Z N)\,y = N^H F` (one LU solve per frequency, all in one
     call), and the reactions are the least-norm :math:`\lambda = (C^	op)^+ (Z x - F)` — the same solution as the
-    minimum-norm saddle solve whenever :math:`N^H Z N` is regular (to round-off: 1e-15 relative). A stack
-    where it is singular (an unrestrained direction) is solved frequency by frequency by :func:`solve_saddle`."""
+    minimum-norm saddle solve whenever :math:`N^H Z N` is regular (residuals ~1e-14 of the load; the least
+    squares' ~1e-12). A stack where it is exactly singular (LU fails) or the solution is not finite is solved
+    frequency by frequency by :func:`solve_saddle`; a nearly singular one is not detected (with a vessel's mass at
+    ω > 0, as the screening and the gusts' grid have it, it does not arise)."""
     m = Cmat.shape[0]
     try:
         if m:

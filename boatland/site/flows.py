@@ -46,7 +46,8 @@ up to 12 m/s from five directions (Tp 5, 7, 10 s; head to beam seas). So:
 
 The scenario's own ``[current]`` / ``[wind]`` is replaced by the weather's where the weather has one (their drag
 coefficients and the gusts' spectrum kept) and acts in every sea state where it has not. A node where the landing
-has no static equilibrium under the push and the flows (:class:`~boatland.landing.law.NoStaticEquilibrium`)
+has no static equilibrium under the push and the flows (:class:`~boatland.landing.law.NoStaticEquilibrium`), or
+where the skipper's trim cannot balance their yaw moment (:class:`~boatland.landing.environment.TrimImpossible`),
 counts as limit 0: a sea state's limit is that of its other nodes' ingredients times their share of the weight,
 and the limits' source says so.
 """
@@ -320,8 +321,9 @@ def _in_flows(db: HydroDB, weather: Weather, L: np.ndarray, flow_setup, progress
                                       weather.current),
                                      (f"wind every {WIND_SPEED_STEP:g} m/s and {WIND_DIRECTION_STEP:g}°", weather.wind))
                       if f is not None)
-    note = (f"; no static equilibrium on the landing at {len(failed)} of these nodes, e.g. {failed[0]}: limit 0 "
-            "there, the sea state's limit scaled by its other nodes' weight" if failed else "")
+    note = (f"; the landing cannot be held (no static equilibrium, or no trim against the yaw moment) at "
+            f"{len(failed)} of these nodes, e.g. {failed[0]}: limit 0 there, the sea state's limit scaled by its "
+            "other nodes' weight" if failed else "")
     return SeaLimits(Hs_limit=H, margin=margin, beta_deg=relative_directions(weather.from_deg, L), governing=gov,
                      two_spectra=two, landings_deg=L, accept=p_acc, access_duration=float(kw["access_duration"]),
                      statistics=kw["statistics"], method=kw["method"], mu=float(adjusted(base).mu),

@@ -147,6 +147,17 @@ def test_a_flow_just_below_north_interpolates_to_the_0_degree_node(ctv27):
         assert lim.Hs_limit[0, 0] == pytest.approx(lim.Hs_limit[1, 0], rel=1e-6)
 
 
+def test_a_node_the_landing_cannot_be_held_in_is_limit_0_not_an_abort(ctv27):
+    """At 2.5 m/s of beam current and a 10 m/s beam wind the skipper's trim cannot balance the yaw moment (the
+    scenario's thrust.direction_deg = 'trim'): that node counts as limit 0, said; the other sea states are judged."""
+    sc, db = ctv27
+    w = Weather.scatter([0.3, 0.3], [7.0, 7.0], [180.0, 180.0], [0.5, 0.5], current=([0.5, 2.3], [270.0, 270.0]),
+                        wind=([5.0, 12.0], [270.0, 270.0]))
+    lim = _judged(sc, db, w, [0.0])
+    assert lim.Hs_limit[1, 0] == 0.0 and lim.Hs_limit[0, 0] > 0.2
+    assert "cannot be held" in lim.source and "cannot balance the steady yaw moment" in lim.source
+
+
 def test_a_scenario_that_cannot_take_a_flow_says_so(ctv27):
     """A configuration error (here: no hull mesh to measure the current's areas on) is that error, not a
     'no static equilibrium' limit of 0."""
