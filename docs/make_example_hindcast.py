@@ -5,8 +5,10 @@ Grøtting 2015 §4.1 used it for Dogger Bank — or ERA5 for real studies).
 The model (seeded, numpy's PCG64; ``python docs/make_example_hindcast.py`` rewrites the file byte for byte):
 
 - wind speed at 10 m: a seasonal mean 6 m/s (July) – 10 m/s (January), times a log-normal AR(1) anomaly
-  (σ_ln 0.35, correlation time 18 h); the wind comes from a direction that wanders (AR(1), σ 50°, 30 h) about
-  the south-west (225°), the prevailing wind of the southern North Sea;
+  (σ_ln 0.35, correlation time 18 h), capped at :data:`U_CAP` (an assumption: the log-normal's tail alone
+  reached 39 m/s and a fetch-limited Hs of 24 m, far beyond southern North Sea storms); the wind comes from a
+  direction that wanders (AR(1), σ 50°, 30 h) about the south-west (225°), the prevailing wind of the southern
+  North Sea;
 - wind sea: Hs = 0.016 U² (fetch-limited, about 60 % of the fully developed 0.021 U² — Pierson–Moskowitz),
   Tp = 1.5 + 3.2 √Hs s, from the wind's direction;
 - swell from the northern North Sea / Atlantic (from 330° ± 20°): Hs log-normal about a seasonal 0.25 (July) –
@@ -29,6 +31,8 @@ import numpy as np
 OUT = Path(__file__).resolve().parents[1] / "scenarios" / "example_hindcast.csv"
 SEED = 2026
 STEP_H = 3
+#: The model wind's cap [m/s] at 10 m (Beaufort 9, a severe gale): its wind sea then stays below 0.016 U² = 7.7 m.
+U_CAP = 22.0
 
 
 def ar1(rng, n: int, tau_h: float, sigma: float, step_h: float = STEP_H) -> np.ndarray:
@@ -52,7 +56,7 @@ def make(step_h: int = STEP_H, tide: bool = False, wind: bool = False) -> str:
     n = t.size
     day = (t - t[0]).astype("timedelta64[h]").astype(float) / 24.0
     winter = 0.5 * (1 + np.cos(2 * np.pi * (day - 15) / 365.25))         # 1 mid-January, 0 mid-July
-    U = (6.0 + 4.0 * winter) * np.exp(ar1(rng, n, 18.0, 0.35, step_h) - 0.5 * 0.35 ** 2)
+    U = np.minimum((6.0 + 4.0 * winter) * np.exp(ar1(rng, n, 18.0, 0.35, step_h) - 0.5 * 0.35 ** 2), U_CAP)
     wind_from = np.mod(225.0 + ar1(rng, n, 30.0, 50.0, step_h), 360.0)
     hw = 0.016 * U ** 2
     tw = 1.5 + 3.2 * np.sqrt(hw)
