@@ -114,6 +114,7 @@ def cmd(args) -> int:
     if len(set(np.round(landings, 6))) != landings.size:
         raise BoatlandInputError("--landing: the same bearing is given twice")
     window = args.window if args.window is not None else DEFAULT_WINDOW_HOURS
+    in_flows = {}                   # each scenario's landing in the weather's flows (boatland.site.flows)
     if weather.current is not None or weather.wind is not None:
         # a scenario that cannot take the weather's flows (no hull or topsides to measure their areas on) says so
         # now, before any vessel's work
@@ -121,9 +122,10 @@ def cmd(args) -> int:
 
         for scenario, db in loaded:
             if scenario is not None:
+                in_flows[id(scenario)] = flow_setups(scenario, db, roll_limit_deg=args.roll_limit)
                 try:
-                    flow_setups(scenario, db)(None if weather.current is None else (0.5, 90.0),
-                                              None if weather.wind is None else (5.0, 90.0))
+                    in_flows[id(scenario)](None if weather.current is None else (0.5, 90.0),
+                                            None if weather.wind is None else (5.0, 90.0))
                 except NoStaticEquilibrium:       # physics, not a bad input: judged node by node below
                     pass
     froms = [weather.from_deg] + ([] if args.one_spectrum else [d[h > 0] for h, _, d in weather.parts.values()])
@@ -147,7 +149,7 @@ def cmd(args) -> int:
               + (f" in each sea state's own {flows}" if flows else "") + " …", file=sys.stderr, flush=True)
         extra = {}
         if flows:
-            extra = {"flow_setup": flow_setups(scenario, db, roll_limit_deg=args.roll_limit),
+            extra = {"flow_setup": in_flows[id(scenario)],
                      "progress": _progress(scenario.name)}
             for what in ("current", "wind"):
                 if getattr(weather, what) is not None and getattr(scenario, what) is not None:

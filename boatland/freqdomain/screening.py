@@ -64,9 +64,9 @@ import numpy as np
 from boatland.errors import BoatlandInputError
 from boatland.freqdomain.landing import LandingSetup
 from boatland.freqdomain.quadratic_drag import QuadraticDrag
-from boatland.freqdomain.statistics import (SlowSwing, ACCEPT_PRESETS, ACCESS_DURATION, DEFAULT_STATISTICS, HS_MAX, MODES, STATISTICS, LimitTable,
+from boatland.freqdomain.statistics import (SlowSwing, ACCEPT_PRESETS, ACCESS_DURATION, DEFAULT_STATISTICS, HS_MAX, STATISTICS, LimitTable,
                                             accept_probability, correlation_matrix, distinct_events,
-                                            incident_probability, limiting_hs, response_correlation,
+                                            incident_probability, limiting_hs, response_correlation, response_names,
                                             spectral_moments, unit_spectra)
 from boatland.scenario.schema import SHEAR_DAMPING_RATIO_DEFAULT, SHEAR_STIFFNESS_DEFAULT
 from boatland.sea.spectra import SpectrumPart
@@ -222,9 +222,8 @@ def slip_transfer(db: HydroDB, setup: LandingSetup, *, omega=None, beta_deg=None
     J0 = (-setup.thrust / n_p * np.tile([1.0, 0.0, 0.0], (n_p, 1))) if method == "wu" else r.J_static
     rows, cap = margin_rows(setup, J0, tilt=method != "wu")
     H = np.concatenate([r.J[:, :, c] @ rows[c].T for c in range(n_p)] + [r.x[..., 3:4]], axis=-1)
-    names = [f"{m} {c}" for c in range(n_p) for m in MODES]
     background = slow_swing(db, setup, J0) if method != "wu" else None
-    return SlipTransfer(omega=w, beta_deg=b, H=H, capacity=cap, names=tuple(names + ["roll"]), J_static=J0,
+    return SlipTransfer(omega=w, beta_deg=b, H=H, capacity=cap, names=response_names(cap.size), J_static=J0,
                         N_static=np.einsum("pk,pk->p", setup.normals, J0), method=method, setup=setup,
                         background=background, motions=r.x, directions=rows)
 

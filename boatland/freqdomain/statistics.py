@@ -38,7 +38,6 @@ from dataclasses import dataclass
 
 import numba
 import numpy as np
-from scipy.special import ndtr
 
 from boatland.errors import BoatlandInputError
 from boatland.sea.spectra import SpectrumPart
@@ -411,38 +410,26 @@ def slow_fast_rate(a, m0f, m2f, m0s, m2s, duration: float, sides=1.0, linear_sha
     """
     a, m0f, m2f, m0s, m2s = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (a, m0f, m2f, m0s, m2s)))
     sides = np.broadcast_to(np.asarray(sides, dtype=float), a.shape)
+    edges, u, wA, tail, n_amp, c = _swing_tables(np.array([float(linear_share)]))
+    flat = [np.ascontiguousarray(v, dtype=float).ravel() for v in (a, m0f, m2f, m0s, m2s, sides)]
+    out = np.empty(a.size)
+    _swing_rates(*flat, float(duration), wA[0], n_amp[0], tail[0], float(linear_share) == 1.0, edges, u, c, out)
+    return out.reshape(a.shape)
+
+
+def _swing_tables(shares: np.ndarray):
+    """The quadrature of :func:`slow_fast_rate` for each linear share λ of ``shares`` (K,): the amplitude bins'
+    ``edges`` and middles ``u`` (in σ_s, up to :data:`SLOW_A_MAX`), their probabilities ``wA`` (K, nA)
+    (:func:`slow_amplitude_weights`) and tails P(u > edge) (K, nA + 1), how many bins count ``n_amp`` (K,) —
+    those whose weight is below 1e-25 of the largest change no rate by more than 1e-20 relative — and the
+    distinct |cos| ``c`` of the :data:`SLOW_PHASES` phases of a cycle (they come in ± pairs, each twice)."""
     edges = np.linspace(0.0, SLOW_A_MAX, SLOW_A_POINTS + 1)                   # A/σ_s
     u = 0.5 * (edges[1:] + edges[:-1])
-    wA = slow_amplitude_weights(edges, linear_share)                            # probability of each bin
-    c = np.cos(2 * math.pi * (np.arange(SLOW_PHASES) + 0.5) / SLOW_PHASES)
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        nu0f = np.where(m0f > 0, np.sqrt(m2f / m0f) / (2 * math.pi), 0.0)
-        Ts = np.where(m2s > 0, 2 * math.pi * np.sqrt(m0s / m2s), duration)
-        sig_s = np.sqrt(m0s)
-        x = sig_s[..., None, None] * u[:, None] * c[None, :]                   # (..., nA, nφ)
-        sf = np.where(m0f > 0, m0f, 1.0)[..., None, None]
-        aa = a[..., None, None]
-
-        def nu(b):
-            return nu0f[..., None, None] * np.exp(-0.5 * np.where(b > 0, b, 0.0) ** 2 / sf)
-
-        rate = nu(aa - x) + np.where(sides[..., None, None] > 1, nu(aa + x), 0.0)
-        I = rate.mean(axis=-1) * Ts[..., None]                                 # ∫ over one cycle, (..., nA)
-        # and the swing's crest itself: above a − z with z the waves' value there, Φ((a − A)/σ_f) (also −a)
-        A = sig_s[..., None] * u
-        sf1 = np.sqrt(sf[..., 0])
-        crest = ndtr((a[..., None] - A) / sf1)
-        crest = crest * np.where(sides[..., None] > 1, ndtr((a[..., None] - A) / sf1), 1.0)
-        q = np.einsum("...k,k->...", np.exp(-I) * crest, wA)
-        # a slow swing alone: its crest beyond a once per cycle, the fast part adding nothing
-        tail = np.concatenate([np.cumsum(wA[::-1])[::-1], [0.0]])              # P(u > edges[k])
-        r = np.maximum(a, 0.0) / np.where(m0s > 0, np.sqrt(m0s), 1.0)
-        slow_only = np.where(r >= SLOW_A_MAX, 0.0, np.interp(r, edges, tail)) * sides
-        if linear_share == 1.0:                                                 # Rayleigh: exactly
-            slow_only = np.exp(-0.5 * r * r) * sides
-        q = np.where(m0f > 0, q, 1.0 - np.minimum(slow_only, 1.0))
-        out = -np.log(np.clip(q, 1e-300, 1.0)) / Ts
-    return np.where(m0s > 0, out, rice_rate(a, m0f, m2f) * sides)
+    wA = np.stack([slow_amplitude_weights(edges, float(s)) for s in shares])
+    tail = np.concatenate([np.cumsum(wA[:, ::-1], axis=1)[:, ::-1], np.zeros((shares.size, 1))], axis=1)
+    n_amp = np.array([int(np.flatnonzero(w >= 1e-25 * w.max())[-1]) + 1 for w in wA], dtype=np.int64)
+    c = np.cos(2 * math.pi * (np.arange(SLOW_PHASES // 4) + 0.5) / SLOW_PHASES)
+    return edges, u, wA, tail, n_amp, c
 
 
 def swing_limits(m: np.ndarray, capacity, p_acc: float, duration: float, keep, background: SlowSwing):
@@ -482,15 +469,8 @@ u_i(H_s) = -\ln(1 - P_{facc})` in :math:`\ln H_s` on [1 mm, :data:`HS_MAX`] by t
                                                                     dtype=float)
     bg = np.broadcast_to(np.asarray(background.moments, dtype=float), lead + (R, 3)).reshape(n, R, 3)
     lam = np.broadcast_to(np.asarray(background.linear_share, dtype=float), lead).reshape(n)
-    edges = np.linspace(0.0, SLOW_A_MAX, SLOW_A_POINTS + 1)
-    u = 0.5 * (edges[1:] + edges[:-1])
     shares, which = np.unique(lam, return_inverse=True)
-    wA = np.stack([slow_amplitude_weights(edges, float(s)) for s in shares])         # (K, nA)
-    tail = np.concatenate([np.cumsum(wA[:, ::-1], axis=1)[:, ::-1], np.zeros((shares.size, 1))], axis=1)
-    # the phases' cosines come in ± pairs, each twice (SLOW_PHASES a multiple of 4): the distinct |cos|
-    c = np.cos(2 * math.pi * (np.arange(SLOW_PHASES // 4) + 0.5) / SLOW_PHASES)
-    # amplitudes whose weight is below 1e-25 of the largest change no rate by more than 1e-20 relative: left out
-    n_amp = np.array([int(np.flatnonzero(w >= 1e-25 * w.max())[-1]) + 1 for w in wA], dtype=np.int64)
+    edges, u, wA, tail, n_amp, c = _swing_tables(shares)
     sides = np.ones(R)
     sides[-1] = 2.0                                                   # roll (last): both signs
     target = -math.log1p(-p_acc) / duration
@@ -523,7 +503,8 @@ def _swing_rate(a, m0f, m2f, m0s, m2s, duration, sides, wA, n_amp, tail, rayleig
         nu0f = math.sqrt(m2f / m0f) / (2 * math.pi)
         half = 0.5 / m0f
         sf1 = math.sqrt(m0f)
-        q = 0.0
+        q = 0.0                       # and 1 − q summed as such (p): small rates keep their digits
+        p = 0.0
         for i in range(n_amp):
             x = sig_s * u[i]
             acc = 0.0
@@ -533,23 +514,37 @@ def _swing_rate(a, m0f, m2f, m0s, m2s, duration, sides, wA, n_amp, tail, rayleig
                 acc += (math.exp(-half * b1 * b1) if b1 > 0.0 else 1.0) + (math.exp(-half * b2 * b2) if b2 > 0.0
                                                                            else 1.0)
             I = nu0f * sides * acc / (2 * c.size) * Ts
-            crest = _ndtr((a - x) / sf1)
+            z = (a - x) / sf1
+            crest = _ndtr(z)                                         # Φ(z): the crest below the level …
+            over = _ndtr(-z)                                         # … and 1 − Φ(z), each to its own digits
             if sides > 1.0:
+                over *= 1.0 + crest                                  # 1 − Φ² = (1 − Φ)(1 + Φ)
                 crest *= crest
-            q += math.exp(-I) * crest * wA[i]
+            q += wA[i] * math.exp(-I) * crest                        # e^{−I} Φ
+            p += wA[i] * (-math.expm1(-I) + math.exp(-I) * over)     # 1 − e^{−I} Φ
+        if q < 0.5:                   # a likely passage: q itself is the accurate one
+            return -math.log(max(q, 1e-300)) / Ts
     else:                                                            # the swing alone: its crests
         r = max(a, 0.0) / sig_s
         if rayleigh:
-            slow = math.exp(-0.5 * r * r) * sides
+            p = math.exp(-0.5 * r * r) * sides
         elif r >= edges[-1]:
-            slow = 0.0
+            p = 0.0
         else:
             k = min(int(r / (edges[1] - edges[0])), edges.size - 2)
             f = (r - edges[k]) / (edges[k + 1] - edges[k])
-            slow = (tail[k] + f * (tail[k + 1] - tail[k])) * sides
-        q = 1.0 - min(slow, 1.0)
-    q = min(max(q, 1e-300), 1.0)
-    return -math.log(q) / Ts
+            p = (tail[k] + f * (tail[k + 1] - tail[k])) * sides
+    if p >= 1.0:
+        return -math.log(1e-300) / Ts
+    return -math.log1p(-p) / Ts
+
+
+@numba.njit(cache=True)
+def _swing_rates(a, m0f, m2f, m0s, m2s, sides, duration, wA, n_amp, tail, rayleigh, edges, u, c, out):
+    """:func:`_swing_rate` of each element (one λ)."""
+    for i in range(a.size):
+        out[i] = _swing_rate(a[i], m0f[i], m2f[i], m0s[i], m2s[i], duration, sides[i], wA, n_amp, tail, rayleigh,
+                             edges, u, c)
 
 
 @numba.njit(cache=True)

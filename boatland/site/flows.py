@@ -58,8 +58,9 @@ import numpy as np
 
 from boatland.freqdomain.landing import LandingSetup
 from boatland.freqdomain.screening import default_omega, margin_rows, slow_swing
-from boatland.freqdomain.statistics import (ACCEPT_PRESETS, ACCESS_DURATION, DEFAULT_STATISTICS, MODES, SlowSwing,
-                                            accept_probability, correlation_matrix, distinct_events, limiting_hs)
+from boatland.freqdomain.statistics import (ACCEPT_PRESETS, ACCESS_DURATION, DEFAULT_STATISTICS, SlowSwing,
+                                            accept_probability, correlation_matrix, distinct_events, limiting_hs,
+                                            response_names)
 from boatland.landing.law import NoStaticEquilibrium
 from boatland.sea.spectra import SpectrumPart
 from boatland.site.compass import relative_direction
@@ -234,7 +235,7 @@ def _in_flows(db: HydroDB, weather: Weather, L: np.ndarray, flow_setup, progress
     failed_w = np.zeros((n, nL))
     failed: list[str] = []
     swing_any = False
-    names = tuple(f"{m} {c}" for c in range(base.n_points) for m in MODES) + ("roll",)
+    names = response_names(R)
     for ck, cj in currents:
         current = flow_of(ck, cj, CURRENT_SPEED_STEP, CURRENT_DIRECTION_STEP)
         mine = {k: v for k, v in pairs.items() if k[:2] == (ck, cj)}
